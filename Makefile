@@ -1,0 +1,58 @@
+# qtree: quadtree decomposition of polygons, as small Unix filters.
+.POSIX:
+.SUFFIXES:
+
+PREFIX = /usr/local
+MANPREFIX = $(PREFIX)/share/man
+CC = cc
+CFLAGS = -O2 -g -Wall -Wextra
+QTCFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -ffp-contract=off -Ilib
+LDLIBS = -lm
+
+BIN = polyread qtsplit
+MAN1 = man/polyread.1 man/qtsplit.1
+MAN5 = man/qtree.5
+LIBOBJ = lib/util.o lib/geom.o lib/stream.o
+
+all: $(BIN)
+
+$(LIBOBJ): lib/qtree.h
+lib/libqtree.a: $(LIBOBJ)
+	rm -f $@
+	ar rc $@ $(LIBOBJ)
+	ranlib $@
+
+.SUFFIXES: .c .o
+.c.o:
+	$(CC) $(QTCFLAGS) $(CFLAGS) -c -o $@ $<
+
+$(BIN): lib/libqtree.a
+polyread: tools/polyread.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/polyread.o lib/libqtree.a $(LDLIBS)
+qtsplit: tools/qtsplit.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o lib/libqtree.a $(LDLIBS)
+tools/polyread.o tools/qtsplit.o: lib/qtree.h
+
+test: all
+	mandoc -T lint -W warning $(MAN1) $(MAN5)
+	bats tests
+
+demo: all
+	./polyread samples/amoeba.brep | ./qtsplit -l 6 | ./qtstats
+
+install: all
+	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(MANPREFIX)/man1 \
+	    $(DESTDIR)$(MANPREFIX)/man5
+	cp -f $(BIN) $(DESTDIR)$(PREFIX)/bin/
+	cp -f $(MAN1) $(DESTDIR)$(MANPREFIX)/man1/
+	cp -f $(MAN5) $(DESTDIR)$(MANPREFIX)/man5/
+
+uninstall:
+	for f in $(BIN); do rm -f $(DESTDIR)$(PREFIX)/bin/$$f; done
+	for f in $(MAN1); do rm -f $(DESTDIR)$(MANPREFIX)/man1/$${f#man/}; done
+	for f in $(MAN5); do rm -f $(DESTDIR)$(MANPREFIX)/man5/$${f#man/}; done
+
+clean:
+	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o
+
+.PHONY: all test demo install uninstall clean

@@ -1,0 +1,513 @@
+/* Reading and writing the qtree(5) format. */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "qtree.h"
+
+enum { BEFORE_HEADER, IN_BODY, AFTER_END };
+
+/* Cell corners as qtree(5) defines them: x0 + i * h in double arithmetic. */
+double
+cellcoord(double x0, double size, int level, uint64_t i)
+{
+	double h = ldexp(size, -level);
+
+	return x0 + (double)i * h;
+}
+
+/* Column and row of a path; -1 when the path is malformed for its level. */
+int
+pathcell(const char *path, int level, uint64_t *ix, uint64_t *iy)
+{
+	int i;
+
+	*ix = *iy = 0;
+	if (level == 0)
+		return strcmp(path, ".") == 0 ? 0 : -1;
+	for (i = 0; i < level; i++) {
+		unsigned d = (unsigned char)path[i] - '0';
+
+		if (d > 3)
+			return -1;
+		*ix = *ix << 1 | (d & 1);
+		*iy = *iy << 1 | d >> 1;
+	}
+	return path[level] == '\0' ? 0 : -1;
+}
+
+void
+cellpath(char *buf, int level, uint64_t ix, uint64_t iy)
+{
+	int i;
+
+	if (level == 0) {
+		strcpy(buf, ".");
+		return;
+	}
+	for (i = 0; i < level; i++) {
+		int shift = level - 1 - i;
+
+		buf[i] = '0' + (int)((ix >> shift & 1) | (iy >> shift & 1) << 1);
+	}
+	buf[level] = '\0';
+}
+
+void
+qt_open(struct qtreader *r, FILE *fp, const char *name)
+{
+	memset(r, 0, sizeof(*r));
+	r->fp = fp;
+	r->name = name;
+}
+
+void
+qt_close(struct qtreader *r)
+{
+	free(r->buf);
+	r->buf = NULL;
+	if (r->fp != stdin)
+		fclose(r->fp);
+}
+
+void
+qt_fail(struct qtreader *r, const char *fmt, ...)
+{
+	va_list ap;
+	char msg[512];
+
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof(msg), fmt, ap);
+	va_end(ap);
+	errat(r->name, r->lineno, "%s", msg);
+}
+
+static double
+realfield(struct qtreader *r, const char *s, const char *what)
+{
+	const char *end;
+	double v;
+	int rc = parsereal(s, &end, &v);
+
+	if (rc == -2)
+		qt_fail(r, "%s out of range: %s", what, s);
+	if (rc < 0 || *end != '\0')
+		qt_fail(r, "%s is not a number: %s", what, s);
+	if (!coordok(v))
+		qt_fail(r, "%s outside the supported range "
+		    "(0 or 1e-100 to 1e100 in magnitude): %s", what, s);
+	return v;
+}
+
+static long long
+intfield(struct qtreader *r, const char *s, const char *what, long long lo,
+    long long hi)
+{
+	const char *end;
+	long long v;
+
+	if (parselong(s, &end, &v) < 0 || *end != '\0')
+		qt_fail(r, "%s is not an integer: %s", what, s);
+	if (v < lo || v > hi)
+		qt_fail(r, "%s out of range %lld to %lld: %s", what, lo, hi, s);
+	return v;
+}
+
+static void
+nfields(struct qtreader *r, struct qtrec *rec, int lo, int hi)
+{
+	if (rec->nfield < lo || rec->nfield > hi)
+		qt_fail(r, "%s record has %d fields, expected %d",
+		    rec->field[0], rec->nfield, hi);
+}
+
+static void
+parsecell(struct qtreader *r, struct qtrec *rec)
+{
+	struct cell *c = &rec->c;
+	const char *tag = rec->field[0];
+	uint64_t ix, iy;
+	unsigned long long lim;
+	double x, y, size;
+
+	if (rec->kind == QT_LEAF)
+		nfields(r, rec, 9, 10);
+	else
+		nfields(r, rec, 8, 8);
+	if (!r->haveuniverse)
+		qt_fail(r, "%s record before the universe record", tag);
+	c->path = rec->field[1];
+	c->level = intfield(r, rec->field[2], "level", 0, QT_MAXLEVEL);
+	if (pathcell(c->path, c->level, &ix, &iy) < 0)
+		qt_fail(r, "path %s does not fit level %d", c->path, c->level);
+	lim = ((unsigned long long)1 << c->level) - 1;
+	c->ix = intfield(r, rec->field[3], "ix", 0, lim);
+	c->iy = intfield(r, rec->field[4], "iy", 0, lim);
+	if (c->ix != ix || c->iy != iy)
+		qt_fail(r, "cell %s is at column %llu row %llu, not %s %s",
+		    c->path, (unsigned long long)ix, (unsigned long long)iy,
+		    rec->field[3], rec->field[4]);
+	c->x = realfield(r, rec->field[5], "x");
+	c->y = realfield(r, rec->field[6], "y");
+	c->size = realfield(r, rec->field[7], "size");
+	x = cellcoord(r->u.x0, r->u.size, c->level, ix);
+	y = cellcoord(r->u.y0, r->u.size, c->level, iy);
+	size = ldexp(r->u.size, -c->level);
+	if (c->x != x || c->y != y || c->size != size) {
+		char bx[32], by[32], bs[32];
+
+		fmtreal(bx, x);
+		fmtreal(by, y);
+		fmtreal(bs, size);
+		qt_fail(r, "cell %s lies at %s %s size %s in this universe",
+		    c->path, bx, by, bs);
+	}
+	c->class = 0;
+	if (rec->kind == QT_LEAF) {
+		const char *k = rec->field[8];
+
+		if ((k[0] != 'F' && k[0] != 'E' && k[0] != 'P') || k[1] != '\0')
+			qt_fail(r, "leaf class is not F, E or P: %s", k);
+		c->class = k[0];
+	}
+	r->havecells = 1;
+}
+
+static const struct {
+	const char	*tag;
+	enum qtkind	 kind;
+} tags[] = {
+	{ "universe", QT_UNIVERSE }, { "level", QT_LEVEL },
+	{ "ring", QT_RING }, { "v", QT_VERTEX }, { "node", QT_NODE },
+	{ "leaf", QT_LEAF },
+};
+
+/* Splits the line at single spaces; refuses empty fields. */
+static void
+splitfields(struct qtreader *r, struct qtrec *rec)
+{
+	char *p = rec->line;
+	int n = 0;
+
+	for (;;) {
+		if (n == (int)(sizeof(rec->field) / sizeof(rec->field[0])))
+			qt_fail(r, "too many fields");
+		rec->field[n++] = p;
+		if ((p = strchr(p, ' ')) == NULL)
+			break;
+		*p++ = '\0';
+	}
+	rec->nfield = n;
+	while (n-- > 0)
+		if (rec->field[n][0] == '\0')
+			qt_fail(r, "empty field (fields are separated by one "
+			    "space)");
+}
+
+static enum qtkind
+body(struct qtreader *r, struct qtrec *rec)
+{
+	size_t i, taglen = strcspn(rec->line, " ");
+	const char *end;
+	long long count;
+
+	rec->kind = QT_OTHER;
+	for (i = 0; i < sizeof(tags) / sizeof(tags[0]); i++)
+		if (strlen(tags[i].tag) == taglen &&
+		    strncmp(tags[i].tag, rec->line, taglen) == 0)
+			rec->kind = tags[i].kind;
+	if (r->vleft > 0 && rec->kind != QT_VERTEX)
+		qt_fail(r, "ring %ld is missing %zu of its v records",
+		    r->nrings, r->vleft);
+	if (taglen == 3 && strncmp(rec->line, "end", 3) == 0) {
+		if (strncmp(rec->line, "end ", 4) != 0 ||
+		    parselong(rec->line + 4, &end, &count) < 0 || *end != '\0')
+			qt_fail(r, "malformed end record");
+		if (count < 0 || (unsigned long long)count != r->count)
+			qt_fail(r, "end record counts %lld records, the stream "
+			    "has %llu", count, r->count);
+		r->state = AFTER_END;
+		return QT_EOF;
+	}
+	if (taglen == 5 && strncmp(rec->line, "qtree", 5) == 0)
+		qt_fail(r, "qtree header inside the stream");
+	if (taglen == 0)
+		qt_fail(r, "record without a tag");
+	r->count++;
+	if (rec->kind == QT_OTHER)
+		return QT_OTHER;
+	splitfields(r, rec);
+	switch (rec->kind) {
+	case QT_UNIVERSE:
+		nfields(r, rec, 4, 4);
+		if (r->haveuniverse)
+			qt_fail(r, "second universe record");
+		if (r->nrings > 0 || r->havecells)
+			qt_fail(r, "universe record after rings or cells");
+		rec->u.x0 = realfield(r, rec->field[1], "x0");
+		rec->u.y0 = realfield(r, rec->field[2], "y0");
+		rec->u.size = realfield(r, rec->field[3], "size");
+		if (rec->u.size <= 0)
+			qt_fail(r, "universe size is not positive");
+		r->u = rec->u;
+		r->haveuniverse = 1;
+		break;
+	case QT_LEVEL:
+		nfields(r, rec, 2, 2);
+		if (r->havelevel)
+			qt_fail(r, "second level record");
+		if (r->havecells)
+			qt_fail(r, "level record after cells");
+		rec->level = intfield(r, rec->field[1], "level", 0,
+		    QT_MAXLEVEL);
+		r->havelevel = 1;
+		break;
+	case QT_RING:
+		nfields(r, rec, 4, 4);
+		if (!r->haveuniverse)
+			qt_fail(r, "ring record before the universe record");
+		if (r->havecells)
+			qt_fail(r, "ring record after cells");
+		rec->ringid = intfield(r, rec->field[1], "ring id", 1,
+		    (long long)1 << 40);
+		if (rec->ringid != r->nrings + 1)
+			qt_fail(r, "ring %ld follows ring %ld", rec->ringid,
+			    r->nrings);
+		if (strcmp(rec->field[2], "outer") == 0)
+			rec->hole = 0;
+		else if (strcmp(rec->field[2], "hole") == 0)
+			rec->hole = 1;
+		else
+			qt_fail(r, "ring kind is not outer or hole: %s",
+			    rec->field[2]);
+		rec->nvert = intfield(r, rec->field[3], "vertex count", 3,
+		    (long long)1 << 40);
+		r->nrings++;
+		r->vleft = rec->nvert;
+		break;
+	case QT_VERTEX:
+		nfields(r, rec, 3, 3);
+		if (r->vleft == 0)
+			qt_fail(r, "v record outside a ring");
+		rec->v.x = realfield(r, rec->field[1], "x");
+		rec->v.y = realfield(r, rec->field[2], "y");
+		r->vleft--;
+		break;
+	case QT_NODE:
+	case QT_LEAF:
+		parsecell(r, rec);
+		break;
+	default:
+		break;
+	}
+	return rec->kind;
+}
+
+/*
+ * Returns the next record, QT_EOF after a valid end record.  Every defect
+ * of the stream is reported here with the file and line, and exits 1.
+ */
+enum qtkind
+qt_read(struct qtreader *r, struct qtrec *rec)
+{
+	ssize_t n;
+
+	for (;;) {
+		errno = 0;
+		if ((n = getline(&r->buf, &r->cap, r->fp)) < 0) {
+			if (ferror(r->fp))
+				errat(r->name, 0, "read error: %s",
+				    strerror(errno ? errno : EIO));
+			if (r->state == AFTER_END)
+				return QT_EOF;
+			r->lineno++;
+			if (r->state == BEFORE_HEADER)
+				qt_fail(r, "empty input: not a qtree stream");
+			qt_fail(r, "truncated stream: no end record");
+		}
+		r->lineno++;
+		if (n > 0 && r->buf[n - 1] == '\n')
+			r->buf[--n] = '\0';
+		if (strlen(r->buf) != (size_t)n)
+			qt_fail(r, "NUL byte in line");
+		if (r->buf[0] == '#')
+			continue;
+		rec->line = r->buf;
+		rec->len = n;
+		switch (r->state) {
+		case BEFORE_HEADER:
+			if (strncmp(r->buf, "qtree ", 6) != 0)
+				qt_fail(r, "not a qtree stream (no qtree "
+				    "header)");
+			if (strcmp(r->buf + 6, "1") != 0)
+				qt_fail(r, "unsupported qtree version: %s",
+				    r->buf + 6);
+			r->state = IN_BODY;
+			continue;
+		case AFTER_END:
+			qt_fail(r, "data after the end record");
+			break;
+		default:
+			if (body(r, rec) == QT_EOF)
+				continue;	/* then EOF must follow */
+			return rec->kind;
+		}
+	}
+}
+
+/* Output: one buffer, flushed in large writes. */
+static char outbuf[1 << 16];
+static size_t outlen;
+static unsigned long long written;
+
+static void
+flushout(void)
+{
+	if (outlen > 0 && fwrite(outbuf, 1, outlen, stdout) != outlen)
+		die(1, "write error: %s", strerror(errno ? errno : EIO));
+	outlen = 0;
+}
+
+void
+qt_put(const char *s, size_t n)
+{
+	if (outlen + n > sizeof(outbuf)) {
+		flushout();
+		if (n > sizeof(outbuf)) {
+			if (fwrite(s, 1, n, stdout) != n)
+				die(1, "write error: %s",
+				    strerror(errno ? errno : EIO));
+			return;
+		}
+	}
+	memcpy(outbuf + outlen, s, n);
+	outlen += n;
+}
+
+static void
+putstr(const char *s)
+{
+	qt_put(s, strlen(s));
+}
+
+unsigned long long
+qt_written(void)
+{
+	return written;
+}
+
+void
+qt_header(void)
+{
+	putstr("qtree 1\n");
+}
+
+void
+qt_raw(const char *line, size_t n)
+{
+	qt_put(line, n);
+	qt_put("\n", 1);
+	written++;
+}
+
+void
+qt_universe(const struct universe *u)
+{
+	char line[128], *p;
+
+	p = line + sprintf(line, "universe ");
+	p = fmtreal(p, u->x0);
+	*p++ = ' ';
+	p = fmtreal(p, u->y0);
+	*p++ = ' ';
+	p = fmtreal(p, u->size);
+	*p++ = '\n';
+	qt_put(line, p - line);
+	written++;
+}
+
+void
+qt_level(int level)
+{
+	char line[32];
+
+	qt_put(line, sprintf(line, "level %d\n", level));
+	written++;
+}
+
+void
+qt_ring(const struct ring *ring)
+{
+	char line[96], *p;
+	size_t i;
+
+	p = line + sprintf(line, "ring %ld %s ", ring->id,
+	    ring->hole ? "hole" : "outer");
+	p = fmtint(p, (long long)ring->n);
+	*p++ = '\n';
+	qt_put(line, p - line);
+	for (i = 0; i < ring->n; i++) {
+		p = line;
+		*p++ = 'v';
+		*p++ = ' ';
+		p = fmtreal(p, ring->v[i].x);
+		*p++ = ' ';
+		p = fmtreal(p, ring->v[i].y);
+		*p++ = '\n';
+		qt_put(line, p - line);
+	}
+	written += 1 + ring->n;
+}
+
+void
+qt_cell(const struct cell *c)
+{
+	char line[256], *p = line;
+	size_t n;
+
+	if (c->class) {
+		memcpy(p, "leaf ", 5);
+		p += 5;
+	} else {
+		memcpy(p, "node ", 5);
+		p += 5;
+	}
+	n = strlen(c->path);
+	memcpy(p, c->path, n);
+	p += n;
+	*p++ = ' ';
+	p = fmtint(p, c->level);
+	*p++ = ' ';
+	p = fmtint(p, (long long)c->ix);
+	*p++ = ' ';
+	p = fmtint(p, (long long)c->iy);
+	*p++ = ' ';
+	p = fmtreal(p, c->x);
+	*p++ = ' ';
+	p = fmtreal(p, c->y);
+	*p++ = ' ';
+	p = fmtreal(p, c->size);
+	if (c->class) {
+		*p++ = ' ';
+		*p++ = c->class;
+	}
+	*p++ = '\n';
+	qt_put(line, p - line);
+	written++;
+}
+
+/* The end record is the promise that the stream is whole. */
+void
+qt_end(void)
+{
+	char line[48], *p;
+
+	p = line + sprintf(line, "end ");
+	p = fmtint(p, (long long)written);
+	*p++ = '\n';
+	qt_put(line, p - line);
+	flushout();
+}

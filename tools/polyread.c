@@ -1,0 +1,1287 @@
+/*
+ * polyread: read polygons in brep, xy, wkt or Triangle poly form, check
+ * that they make a valid region, and write them as a qtree(5) stream of
+ * rings: outer rings counter-clockwise, holes clockwise.
+ */
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+#include "qtree.h"
+
+enum format { AUTO, BREP, XY, WKT, POLY };
+enum role { UNKNOWN = -1, OUTER = 0, HOLE = 1 };
+
+struct inring {
+	const char	*file;
+	long		*line;		/* input line of each vertex */
+	struct point	*v;
+	size_t		 n, cap;
+	long		 firstline;
+	int		 role;		/* as declared, or UNKNOWN */
+	long		 poly;		/* declared polygon, for wkt */
+	/* filled by the checks */
+	double		 xmin, ymin, xmax, ymax;
+	long		 parent;	/* innermost ring around it, or -1 */
+	long		 depth;
+};
+
+static struct inring *rings;
+static size_t nrings, ringcap;
+static long npolys;
+
+static struct point *seeds;	/* Triangle hole points */
+static long *seedline;
+static const char **seedfile;
+static size_t nseeds;
+
+static struct universe given;
+static int havegiven, givenlevel = -1;
+static const char *givenfile;
+static long givenline;
+
+struct src {
+	const char	*name;
+	char		*buf;
+	size_t		 len;
+	char		*p;
+	long		 line;
+};
+
+static void
+usage(void)
+{
+	fprintf(stderr, "usage: polyread [-f format] [-l level] "
+	    "[-u x0,y0,size] [file ...]\n");
+	exit(2);
+}
+
+static struct inring *
+newring(const char *file, long line, int role, long poly)
+{
+	struct inring *r;
+
+	if (nrings == ringcap) {
+		ringcap = ringcap ? 2 * ringcap : 16;
+		rings = xreallocarray(rings, ringcap, sizeof(*rings));
+	}
+	r = &rings[nrings++];
+	memset(r, 0, sizeof(*r));
+	r->file = file;
+	r->firstline = line;
+	r->role = role;
+	r->poly = poly;
+	return r;
+}
+
+static void
+addvertex(struct src *s, struct inring *r, double x, double y, long line)
+{
+	if (isnan(x) || isnan(y) || isinf(x) || isinf(y))
+		errat(s->name, line, "coordinate is not a finite number");
+	if (!coordok(x) || !coordok(y))
+		errat(s->name, line, "coordinate outside the supported range "
+		    "(0, or 1e-100 to 1e100 in magnitude)");
+	if (r->n == r->cap) {
+		r->cap = r->cap ? 2 * r->cap : 16;
+		r->v = xreallocarray(r->v, r->cap, sizeof(*r->v));
+		r->line = xreallocarray(r->line, r->cap, sizeof(*r->line));
+	}
+	r->v[r->n].x = x;
+	r->v[r->n].y = y;
+	r->line[r->n++] = line;
+}
+
+static void
+readall(struct src *s, const char *path)
+{
+	FILE *fp = openin(path, &s->name);
+	size_t cap = 1 << 16, n;
+	char *nul;
+
+	s->buf = xmalloc(cap);
+	s->len = 0;
+	while ((n = fread(s->buf + s->len, 1, cap - s->len - 1, fp)) > 0) {
+		s->len += n;
+		if (cap - s->len - 1 == 0) {
+			cap *= 2;
+			s->buf = xreallocarray(s->buf, cap, 1);
+		}
+	}
+	if (ferror(fp))
+		die(1, "%s: read error: %s", s->name, strerror(errno));
+	if (fp != stdin)
+		fclose(fp);
+	s->buf[s->len] = '\0';
+	if ((nul = memchr(s->buf, '\0', s->len)) != NULL) {
+		long line = 1;
+		char *q;
+
+		for (q = s->buf; q < nul; q++)
+			line += *q == '\n';
+		errat(s->name, line, "NUL byte in input");
+	}
+	s->p = s->buf;
+	s->line = 1;
+}
+
+/* Token scanner for brep, poly and wkt: '#' starts a comment. */
+static int
+skipspace(struct src *s)
+{
+	for (;;) {
+		if (*s->p == '\n') {
+			s->line++;
+			s->p++;
+		} else if (*s->p == ' ' || *s->p == '\t' || *s->p == '\r' ||
+		    *s->p == '\f' || *s->p == '\v') {
+			s->p++;
+		} else if (*s->p == '#') {
+			while (*s->p != '\n' && *s->p != '\0')
+				s->p++;
+		} else
+			return *s->p != '\0';
+	}
+}
+
+static void
+badtoken(struct src *s, const char *what)
+{
+	char tok[40];
+	size_t n = 0;
+
+	while (s->p[n] != '\0' && !isspace((unsigned char)s->p[n]) &&
+	    n < sizeof(tok) - 4)
+		n++;
+	memcpy(tok, s->p, n);
+	strcpy(tok + n, s->p[n] && !isspace((unsigned char)s->p[n]) ?
+	    "..." : "");
+	errat(s->name, s->line, "%s: %s", what, tok);
+}
+
+static double
+number(struct src *s, const char *what)
+{
+	const char *end;
+	double v;
+	int rc;
+
+	if (!skipspace(s))
+		errat(s->name, s->line, "input ends where %s was expected",
+		    what);
+	if ((rc = parsereal(s->p, &end, &v)) == -2)
+		badtoken(s, "number out of range");
+	if (rc < 0 || (*end != '\0' && !isspace((unsigned char)*end) &&
+	    *end != '#' && *end != ',' && *end != ')'))
+		badtoken(s, "not a number");
+	s->p = (char *)end;
+	return v;
+}
+
+static long long
+integer(struct src *s, const char *what, long long lo, long long hi)
+{
+	long line;
+	double v;
+
+	skipspace(s);
+	line = s->line;
+	v = number(s, what);
+	if (v != floor(v) || v < (double)lo || v > (double)hi)
+		errat(s->name, line, "%s must be an integer from %lld to %lld",
+		    what, lo, hi);
+	return (long long)v;
+}
+
+static void
+parsebrep(struct src *s)
+{
+	long long nv, nh, i;
+	struct inring *r;
+	double cx[4], cy[4], xmin, xmax, ymin, ymax, w, h;
+	long uline;
+	int level;
+
+	nv = integer(s, "number of polygon vertices", 3, (long long)1 << 50);
+	nh = integer(s, "number of hole vertices", 0, (long long)1 << 50);
+	if (nh > 0 && nh < 3)
+		errat(s->name, s->line, "a hole needs at least 3 vertices");
+	level = integer(s, "tree level", 0, QT_MAXLEVEL);
+	skipspace(s);
+	r = newring(s->name, s->line, OUTER, npolys);
+	for (i = 0; i < nv; i++) {
+		double x, y;
+		long line;
+
+		if (!skipspace(s))
+			errat(s->name, s->line, "input ends after %lld of %lld "
+			    "polygon vertices", i, nv);
+		line = s->line;
+		x = number(s, "x");
+		y = number(s, "y");
+		addvertex(s, r, x, y, line);
+	}
+	if (nh > 0) {
+		skipspace(s);
+		r = newring(s->name, s->line, HOLE, npolys);
+		for (i = 0; i < nh; i++) {
+			double x, y;
+			long line;
+
+			if (!skipspace(s))
+				errat(s->name, s->line, "input ends after %lld "
+				    "of %lld hole vertices", i, nh);
+			line = s->line;
+			x = number(s, "x");
+			y = number(s, "y");
+			addvertex(s, r, x, y, line);
+		}
+	}
+	npolys++;
+	skipspace(s);
+	uline = s->line;
+	for (i = 0; i < 4; i++) {
+		if (!skipspace(s))
+			errat(s->name, s->line, "input ends after %lld of the "
+			    "4 universe corners", i);
+		cx[i] = number(s, "universe x");
+		cy[i] = number(s, "universe y");
+	}
+	if (skipspace(s))
+		badtoken(s, "data after the universe corners");
+	xmin = xmax = cx[0];
+	ymin = ymax = cy[0];
+	for (i = 1; i < 4; i++) {
+		xmin = fmin(xmin, cx[i]);
+		xmax = fmax(xmax, cx[i]);
+		ymin = fmin(ymin, cy[i]);
+		ymax = fmax(ymax, cy[i]);
+	}
+	for (i = 0; i < 4; i++) {
+		long long j;
+		int seen = 0;
+
+		if ((cx[i] != xmin && cx[i] != xmax) ||
+		    (cy[i] != ymin && cy[i] != ymax))
+			errat(s->name, uline, "universe corners do not form an "
+			    "axis-aligned square");
+		for (j = 0; j < 4; j++)
+			seen += cx[j] == cx[i] && cy[j] == cy[i];
+		if (seen != 1)
+			errat(s->name, uline, "universe corners repeat a "
+			    "corner");
+	}
+	w = xmax - xmin;
+	h = ymax - ymin;
+	if (w <= 0 || fabs(w - h) > 1e-9 * fmax(w, h))
+		errat(s->name, uline, "universe corners do not form a square "
+		    "(%g wide, %g high)", w, h);
+	if (havegiven)
+		errat(s->name, uline, "a second universe (the first came from "
+		    "%s)", givenfile);
+	given.x0 = xmin;
+	given.y0 = ymin;
+	given.size = fmax(w, h);
+	havegiven = 1;
+	givenfile = s->name;
+	givenline = uline;
+	givenlevel = level;
+}
+
+static void
+parsexy(struct src *s)
+{
+	struct inring *r = NULL;
+	char *p = s->buf, *eol;
+	long line = 0;
+
+	for (; *p != '\0'; p = *eol ? eol + 1 : eol) {
+		const char *q, *end;
+		double x, y;
+
+		line++;
+		eol = strchr(p, '\n');
+		if (eol == NULL)
+			eol = p + strlen(p);
+		for (q = p; q < eol && (*q == ' ' || *q == '\t' || *q == '\r');
+		    q++)
+			;
+		if (q == eol) {
+			r = NULL;	/* a blank line ends the ring */
+			continue;
+		}
+		if (*q == '#')
+			continue;
+		s->line = line;
+		s->p = (char *)q;
+		if (parsereal(q, &end, &x) < 0)
+			badtoken(s, "not a number");
+		for (q = end; *q == ' ' || *q == '\t'; q++)
+			;
+		if (q == end)
+			errat(s->name, line, "expected two numbers, x y");
+		s->p = (char *)q;
+		if (parsereal(q, &end, &y) < 0)
+			badtoken(s, "not a number");
+		for (q = end; q < eol && isspace((unsigned char)*q); q++)
+			;
+		if (q != eol)
+			errat(s->name, line, "expected two numbers, x y");
+		if (r == NULL)
+			r = newring(s->name, line, UNKNOWN, -1);
+		addvertex(s, r, x, y, line);
+	}
+}
+
+static int
+keyword(struct src *s, const char *word)
+{
+	size_t n = strlen(word);
+
+	if (skipspace(s) && strncasecmp(s->p, word, n) == 0 &&
+	    !isalnum((unsigned char)s->p[n]) && s->p[n] != '_') {
+		s->p += n;
+		return 1;
+	}
+	return 0;
+}
+
+static void
+punct(struct src *s, int c)
+{
+	char what[24];
+
+	if (!skipspace(s) || *s->p != c) {
+		snprintf(what, sizeof(what), "expected '%c'", c);
+		if (*s->p == '\0')
+			errat(s->name, s->line, "input ends: %s", what);
+		badtoken(s, what);
+	}
+	s->p++;
+}
+
+static int
+peek(struct src *s, int c)
+{
+	return skipspace(s) && *s->p == c;
+}
+
+static void
+wktring(struct src *s, int role, long poly)
+{
+	struct inring *r;
+	long line;
+
+	if (keyword(s, "EMPTY"))
+		return;
+	punct(s, '(');
+	r = newring(s->name, s->line, role, poly);
+	do {
+		double x, y;
+
+		skipspace(s);
+		line = s->line;
+		x = number(s, "x");
+		y = number(s, "y");
+		if (peek(s, '-') || (skipspace(s) && (isdigit((unsigned char)
+		    *s->p) || *s->p == '.' || *s->p == '+')))
+			errat(s->name, s->line, "three or more coordinates per "
+			    "point: only x y is supported");
+		addvertex(s, r, x, y, line);
+	} while (peek(s, ',') && (s->p++, 1));
+	punct(s, ')');
+	if (r->n < 2 || r->v[0].x != r->v[r->n - 1].x ||
+	    r->v[0].y != r->v[r->n - 1].y)
+		errat(s->name, line, "ring is not closed (the last point must "
+		    "repeat the first)");
+	if (r->n < 4)
+		errat(s->name, line, "ring has fewer than 4 points");
+}
+
+static void
+wktpolygon(struct src *s)
+{
+	size_t first = nrings;
+	long line = s->line;
+	int k = 0;
+
+	if (keyword(s, "EMPTY"))
+		return;
+	punct(s, '(');
+	do {
+		size_t before = nrings;
+
+		wktring(s, k == 0 ? OUTER : HOLE, npolys);
+		if (k == 0 && nrings == before && !peek(s, ')')) {
+			/* an empty shell may only have empty holes */
+			while (peek(s, ',') && (s->p++, 1))
+				if (!keyword(s, "EMPTY"))
+					errat(s->name, s->line, "polygon with "
+					    "an empty shell has a hole");
+			break;
+		}
+		k++;
+	} while (peek(s, ',') && (s->p++, 1));
+	punct(s, ')');
+	if (nrings > first)
+		npolys++;
+	(void)line;
+}
+
+static void
+parsewkt(struct src *s)
+{
+	while (skipspace(s)) {
+		if (keyword(s, "MULTIPOLYGON")) {
+			if (keyword(s, "Z") || keyword(s, "M") ||
+			    keyword(s, "ZM"))
+				errat(s->name, s->line, "Z and M coordinates "
+				    "are not supported");
+			if (keyword(s, "EMPTY"))
+				continue;
+			punct(s, '(');
+			do
+				wktpolygon(s);
+			while (peek(s, ',') && (s->p++, 1));
+			punct(s, ')');
+		} else if (keyword(s, "POLYGON")) {
+			if (keyword(s, "Z") || keyword(s, "M") ||
+			    keyword(s, "ZM"))
+				errat(s->name, s->line, "Z and M coordinates "
+				    "are not supported");
+			wktpolygon(s);
+		} else
+			badtoken(s, "expected POLYGON or MULTIPOLYGON");
+		if (peek(s, ';'))
+			s->p++;
+	}
+}
+
+struct seg {
+	long	a, b;
+	long	line;
+};
+
+static void
+parsepoly(struct src *s)
+{
+	long long nv, dim, nattr, nbm, nseg, nsbm, nholes, i, base = 0, j;
+	struct point *pt = NULL;
+	long *ptline = NULL, *deg, *adj, *used;
+	struct seg *seg = NULL;
+	size_t cap = 0;
+
+	nv = integer(s, "number of vertices", 0, (long long)1 << 40);
+	if (nv == 0)
+		errat(s->name, s->line, "vertices in a separate .node file are "
+		    "not supported");
+	dim = integer(s, "dimension", 2, 2);
+	nattr = integer(s, "number of attributes", 0, 1000);
+	nbm = integer(s, "number of boundary markers", 0, 1);
+	(void)dim;
+	for (i = 0; i < nv; i++) {
+		long long id;
+
+		if (!skipspace(s))
+			errat(s->name, s->line, "input ends after %lld of %lld "
+			    "vertices", i, nv);
+		id = integer(s, "vertex number", 0, (long long)1 << 40);
+		if (i == 0)
+			base = id;
+		if (id != base + i)
+			errat(s->name, s->line, "vertex %lld where %lld was "
+			    "expected", id, base + i);
+		if ((size_t)i == cap) {
+			cap = cap ? 2 * cap : 64;
+			pt = xreallocarray(pt, cap, sizeof(*pt));
+			ptline = xreallocarray(ptline, cap, sizeof(*ptline));
+		}
+		ptline[i] = s->line;
+		pt[i].x = number(s, "x");
+		pt[i].y = number(s, "y");
+		for (j = 0; j < nattr + nbm; j++)
+			number(s, "attribute or boundary marker");
+	}
+	nseg = integer(s, "number of segments", 0, (long long)1 << 40);
+	nsbm = integer(s, "number of segment boundary markers", 0, 1);
+	cap = 0;
+	for (i = 0; i < nseg; i++) {
+		if (!skipspace(s))
+			errat(s->name, s->line, "input ends after %lld of %lld "
+			    "segments", i, nseg);
+		integer(s, "segment number", 0, (long long)1 << 40);
+		if ((size_t)i == cap) {
+			cap = cap ? 2 * cap : 64;
+			seg = xreallocarray(seg, cap, sizeof(*seg));
+		}
+		seg[i].line = s->line;
+		seg[i].a = integer(s, "endpoint", base, base + nv - 1) - base;
+		seg[i].b = integer(s, "endpoint", base, base + nv - 1) - base;
+		if (nsbm)
+			number(s, "boundary marker");
+		if (seg[i].a == seg[i].b)
+			errat(s->name, seg[i].line, "segment joins a vertex to "
+			    "itself");
+	}
+	if (skipspace(s)) {
+		nholes = integer(s, "number of holes", 0, (long long)1 << 40);
+		for (i = 0; i < nholes; i++) {
+			if (!skipspace(s))
+				errat(s->name, s->line, "input ends after %lld "
+				    "of %lld holes", i, nholes);
+			integer(s, "hole number", 0, (long long)1 << 40);
+			seeds = xreallocarray(seeds, nseeds + 1,
+			    sizeof(*seeds));
+			seedline = xreallocarray(seedline, nseeds + 1,
+			    sizeof(*seedline));
+			seedfile = xreallocarray(seedfile, nseeds + 1,
+			    sizeof(*seedfile));
+			seedline[nseeds] = s->line;
+			seedfile[nseeds] = s->name;
+			seeds[nseeds].x = number(s, "x");
+			seeds[nseeds].y = number(s, "y");
+			nseeds++;
+		}
+	}
+	if (skipspace(s)) {
+		long long nreg = integer(s, "number of regions", 0,
+		    (long long)1 << 40);
+
+		for (i = 0; i < nreg; i++) {
+			if (!skipspace(s))
+				errat(s->name, s->line, "input ends after %lld "
+				    "of %lld regions", i, nreg);
+			integer(s, "region number", 0, (long long)1 << 40);
+			number(s, "x");
+			number(s, "y");
+			number(s, "attribute");
+			/* the area constraint is optional */
+			while (*s->p == ' ' || *s->p == '\t' || *s->p == '\r')
+				s->p++;
+			if (*s->p != '\n' && *s->p != '#' && *s->p != '\0')
+				number(s, "maximum area");
+		}
+	}
+	if (skipspace(s))
+		badtoken(s, "data after the regions");
+	/* Rings from segments: every vertex on a segment has two. */
+	deg = xreallocarray(NULL, nv, sizeof(*deg));
+	adj = xreallocarray(NULL, 2 * nv, sizeof(*adj));
+	used = xreallocarray(NULL, nseg ? nseg : 1, sizeof(*used));
+	memset(deg, 0, nv * sizeof(*deg));
+	for (i = 0; i < nseg; i++) {
+		long a = seg[i].a, b = seg[i].b;
+
+		if (deg[a] == 2 || deg[b] == 2)
+			errat(s->name, seg[i].line, "vertex %lld is on more than "
+			    "two segments: only rings are supported",
+			    (deg[a] == 2 ? a : b) + base);
+		adj[2 * a + deg[a]++] = i;
+		adj[2 * b + deg[b]++] = i;
+		used[i] = 0;
+	}
+	for (i = 0; i < nv; i++)
+		if (deg[i] == 1)
+			errat(s->name, ptline[i], "vertex %lld ends a chain of "
+			    "segments that does not close", i + base);
+	for (i = 0; i < nseg; i++) {
+		struct inring *r;
+		long v, e = i;
+
+		if (used[i])
+			continue;
+		r = newring(s->name, seg[i].line, UNKNOWN, -1);
+		v = seg[i].a;
+		do {
+			long w;
+
+			used[e] = 1;
+			addvertex(s, r, pt[v].x, pt[v].y, ptline[v]);
+			w = seg[e].a == v ? seg[e].b : seg[e].a;
+			e = adj[2 * w] == e ? adj[2 * w + 1] : adj[2 * w];
+			v = w;
+		} while (!used[e]);
+	}
+	free(deg);
+	free(adj);
+	free(used);
+	free(pt);
+	free(ptline);
+	free(seg);
+}
+
+static enum format
+detect(struct src *s)
+{
+	char *p = s->buf;
+	int allxy = 1, first = 1, fourints = 0;
+
+	s->p = s->buf;
+	if (skipspace(s) && isalpha((unsigned char)*s->p))
+		return WKT;
+	for (; *p != '\0'; p += strcspn(p, "\n"), p += *p == '\n') {
+		char *q = p;
+		int n = 0, ints = 0;
+
+		while (*q != '\n' && *q != '\0' && *q != '#') {
+			while (*q == ' ' || *q == '\t' || *q == '\r')
+				q++;
+			if (*q == '\n' || *q == '\0' || *q == '#')
+				break;
+			n++;
+			{
+				char *t = q;
+
+				while (*q != '\n' && *q != '\0' &&
+				    !isspace((unsigned char)*q) && *q != '#')
+					q++;
+				ints += strspn(t, "0123456789") ==
+				    (size_t)(q - t);
+				if (n == 2 && !(q - t == 1 && *t == '2'))
+					ints -= 100;
+			}
+		}
+		if (n == 0)
+			continue;
+		if (first)
+			fourints = n == 4 && ints == 4;
+		first = 0;
+		if (n != 2)
+			allxy = 0;
+	}
+	if (allxy)
+		return XY;
+	return fourints ? POLY : BREP;
+}
+
+/* Drops consecutive repeats and the closing repeat of the first vertex. */
+static void
+tidy(struct inring *r)
+{
+	size_t i, k = 0;
+
+	for (i = 0; i < r->n; i++) {
+		if (k > 0 && r->v[i].x == r->v[k - 1].x &&
+		    r->v[i].y == r->v[k - 1].y)
+			continue;
+		r->v[k] = r->v[i];
+		r->line[k++] = r->line[i];
+	}
+	while (k > 1 && r->v[k - 1].x == r->v[0].x && r->v[k - 1].y == r->v[0].y)
+		k--;
+	r->n = k;
+}
+
+/* Which rings they are, as people count them: from 1 in input order. */
+static long
+ringno(const struct inring *r)
+{
+	return (long)(r - rings) + 1;
+}
+
+static void
+checkring(struct inring *r)
+{
+	size_t i, far = 0;
+
+	if (r->n < 3)
+		errat(r->file, r->firstline, "ring %ld has fewer than 3 "
+		    "distinct vertices", ringno(r));
+	for (i = 1; i < r->n; i++)
+		if (r->v[i].x != r->v[0].x || r->v[i].y != r->v[0].y) {
+			far = i;
+			break;
+		}
+	for (i = 1; i < r->n; i++)
+		if (orient2d(r->v[0].x, r->v[0].y, r->v[far].x, r->v[far].y,
+		    r->v[i].x, r->v[i].y) != 0)
+			break;
+	if (i == r->n)
+		errat(r->file, r->firstline, "ring %ld has zero area",
+		    ringno(r));
+	r->xmin = r->xmax = r->v[0].x;
+	r->ymin = r->ymax = r->v[0].y;
+	for (i = 1; i < r->n; i++) {
+		r->xmin = fmin(r->xmin, r->v[i].x);
+		r->xmax = fmax(r->xmax, r->v[i].x);
+		r->ymin = fmin(r->ymin, r->v[i].y);
+		r->ymax = fmax(r->ymax, r->v[i].y);
+	}
+}
+
+/* Crossings: edges bucketed by a recursive split of the plane. */
+struct edge {
+	double	xmin, ymin, xmax, ymax;
+	long	ring;
+	size_t	i;
+};
+
+struct touch {
+	long		ring[2];
+	struct point	p;
+};
+
+static struct edge *edges;
+static struct touch *touches;
+static size_t ntouches, touchcap;
+
+static struct point
+ep(const struct edge *e, int end)
+{
+	const struct inring *r = &rings[e->ring];
+
+	return r->v[(e->i + end) % r->n];
+}
+
+static void
+edgefail(const struct edge *e, const struct edge *f, const char *what,
+    struct point p)
+{
+	const struct inring *r = &rings[e->ring], *q = &rings[f->ring];
+	char px[32], py[32];
+
+	fmtreal(px, p.x);
+	fmtreal(py, p.y);
+	errat(r->file, r->line[e->i], "ring %ld edge %zu (line %ld) %s ring %ld "
+	    "edge %zu (line %ld) at %s %s", ringno(r), e->i + 1, r->line[e->i],
+	    what, ringno(q), f->i + 1, q->line[f->i], px, py);
+}
+
+static void
+addtouch(long a, long b, struct point p)
+{
+	if (ntouches == touchcap) {
+		touchcap = touchcap ? 2 * touchcap : 64;
+		touches = xreallocarray(touches, touchcap, sizeof(*touches));
+	}
+	touches[ntouches].ring[0] = a < b ? a : b;
+	touches[ntouches].ring[1] = a < b ? b : a;
+	touches[ntouches++].p = p;
+}
+
+static void
+testpair(const struct edge *e, const struct edge *f)
+{
+	struct point a, b, c, d, p;
+	int o1, o2, o3, o4, adjacent;
+
+	if (e->xmax < f->xmin || f->xmax < e->xmin || e->ymax < f->ymin ||
+	    f->ymax < e->ymin)
+		return;
+	a = ep(e, 0), b = ep(e, 1), c = ep(f, 0), d = ep(f, 1);
+	o1 = orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
+	o2 = orient2d(a.x, a.y, b.x, b.y, d.x, d.y);
+	if (o1 == o2 && o1 != 0)
+		return;
+	o3 = orient2d(c.x, c.y, d.x, d.y, a.x, a.y);
+	o4 = orient2d(c.x, c.y, d.x, d.y, b.x, b.y);
+	if (o3 == o4 && o3 != 0)
+		return;
+	adjacent = e->ring == f->ring && ((e->i + 1) % rings[e->ring].n == f->i
+	    || (f->i + 1) % rings[e->ring].n == e->i);
+	if (o1 == 0 && o2 == 0) {
+		/* Collinear: a shared stretch, or a single shared end. */
+		int usex = e->xmin != e->xmax;
+		double elo = usex ? e->xmin : e->ymin, ehi = usex ? e->xmax :
+		    e->ymax, flo = usex ? f->xmin : f->ymin, fhi = usex ?
+		    f->xmax : f->ymax;
+
+		if (fmax(elo, flo) < fmin(ehi, fhi)) {
+			p = fmax(elo, flo) == elo ? (usex ? (a.x < b.x ? a : b) :
+			    (a.y < b.y ? a : b)) : (usex ? (c.x < d.x ? c : d) :
+			    (c.y < d.y ? c : d));
+			edgefail(e, f, "overlaps", p);
+		}
+		p = (a.x == c.x && a.y == c.y) || (a.x == d.x && a.y == d.y) ?
+		    a : b;
+	} else if (o1 * o2 < 0 && o3 * o4 < 0) {
+		double den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) *
+		    (d.x - c.x);
+		double t = ((c.x - a.x) * (d.y - c.y) - (c.y - a.y) *
+		    (d.x - c.x)) / den;
+
+		p.x = a.x + t * (b.x - a.x);
+		p.y = a.y + t * (b.y - a.y);
+		edgefail(e, f, "crosses", p);
+	} else
+		p = o1 == 0 ? c : o2 == 0 ? d : o3 == 0 ? a : b;
+	if (adjacent)
+		return;
+	if (e->ring == f->ring)
+		edgefail(e, f, "touches", p);
+	addtouch(e->ring, f->ring, p);
+}
+
+static int
+overlapsbox(const struct edge *e, const double *box)
+{
+	return e->xmax >= box[0] && e->xmin <= box[2] && e->ymax >= box[1] &&
+	    e->ymin <= box[3];
+}
+
+static void
+crossings(size_t *list, size_t n, const double *box, int depth)
+{
+	size_t i, j, *sub, k, most = 0;
+	double child[4][4], mx, my;
+	int q;
+
+	if (n <= 24 || depth >= 40) {
+		for (i = 0; i < n; i++)
+			for (j = i + 1; j < n; j++)
+				testpair(&edges[list[i]], &edges[list[j]]);
+		return;
+	}
+	mx = box[0] + (box[2] - box[0]) / 2;
+	my = box[1] + (box[3] - box[1]) / 2;
+	for (q = 0; q < 4; q++) {
+		child[q][0] = q & 1 ? mx : box[0];
+		child[q][2] = q & 1 ? box[2] : mx;
+		child[q][1] = q & 2 ? my : box[1];
+		child[q][3] = q & 2 ? box[3] : my;
+	}
+	sub = xreallocarray(NULL, n, sizeof(*sub));
+	for (q = 0; q < 4; q++) {
+		for (i = k = 0; i < n; i++)
+			if (overlapsbox(&edges[list[i]], child[q]))
+				sub[k++] = list[i];
+		if (k > most)
+			most = k;
+		if (k == n) {
+			/* no edge left this quarter: splitting cannot help */
+			break;
+		}
+		crossings(sub, k, child[q], depth + 1);
+	}
+	free(sub);
+	if (most == n)
+		for (i = 0; i < n; i++)
+			for (j = i + 1; j < n; j++)
+				testpair(&edges[list[i]], &edges[list[j]]);
+}
+
+static long *uf;
+
+static long
+find(long x)
+{
+	while (uf[x] != x)
+		x = uf[x] = uf[uf[x]];
+	return x;
+}
+
+static long
+polyof(long ring)
+{
+	return rings[ring].depth % 2 == 0 ? ring : rings[ring].parent;
+}
+
+struct link {
+	long		poly, ring;
+	struct point	p;
+};
+
+static int
+cmplink(const void *a, const void *b)
+{
+	const struct link *s = a, *t = b;
+
+	if (s->poly != t->poly)
+		return s->poly < t->poly ? -1 : 1;
+	if (s->p.x != t->p.x)
+		return s->p.x < t->p.x ? -1 : 1;
+	if (s->p.y != t->p.y)
+		return s->p.y < t->p.y ? -1 : 1;
+	return (s->ring > t->ring) - (s->ring < t->ring);
+}
+
+/*
+ * A polygon's interior is connected unless its rings and the points where
+ * they touch form a cycle (the OGC rule GEOS checks).  Each link joins a
+ * ring to a touching point of its own polygon; a link between two nodes
+ * already connected closes a cycle.
+ */
+static void
+connectivity(void)
+{
+	struct link *link = xreallocarray(NULL, 2 * ntouches + 1,
+	    sizeof(*link));
+	size_t i, n = 0, node = nrings;
+
+	for (i = 0; i < ntouches; i++) {
+		long pa = polyof(touches[i].ring[0]);
+		int m;
+
+		if (pa != polyof(touches[i].ring[1]))
+			continue;
+		for (m = 0; m < 2; m++) {
+			link[n].poly = pa;
+			link[n].ring = touches[i].ring[m];
+			link[n++].p = touches[i].p;
+		}
+	}
+	qsort(link, n, sizeof(*link), cmplink);
+	uf = xreallocarray(NULL, nrings + n + 1, sizeof(*uf));
+	for (i = 0; i < nrings + n + 1; i++)
+		uf[i] = i;
+	for (i = 0; i < n; i++) {
+		long a, b;
+
+		if (i > 0 && cmplink(&link[i - 1], &link[i]) == 0)
+			continue;
+		if (i > 0 && (link[i - 1].poly != link[i].poly ||
+		    link[i - 1].p.x != link[i].p.x ||
+		    link[i - 1].p.y != link[i].p.y))
+			node++;
+		a = find(link[i].ring);
+		b = find(node);
+		if (a == b) {
+			const struct inring *r = &rings[link[i].ring];
+			char px[32], py[32];
+
+			fmtreal(px, link[i].p.x);
+			fmtreal(py, link[i].p.y);
+			errat(r->file, r->firstline, "interior is disconnected: "
+			    "ring %ld touches the rings around it at %s %s "
+			    "and elsewhere, closing a loop", ringno(r), px, py);
+		}
+		uf[a] = b;
+	}
+	free(uf);
+	free(link);
+}
+
+/* Depth: how many rings contain it.  Parent: the deepest of those. */
+static void
+nesting(void)
+{
+	size_t i, j, n = 0, cap = 0;
+	long (*pair)[2] = NULL;
+
+	for (i = 0; i < nrings; i++) {
+		rings[i].depth = 0;
+		rings[i].parent = -1;
+	}
+	for (i = 0; i < nrings; i++) {
+		struct inring *a = &rings[i];
+
+		for (j = 0; j < nrings; j++) {
+			struct inring *b = &rings[j];
+
+			if (j == i || b->xmin > a->xmin || b->xmax < a->xmax ||
+			    b->ymin > a->ymin || b->ymax < a->ymax)
+				continue;
+			if (!ring_contains(b->v, b->n, a->v[0], a->v[1]))
+				continue;
+			if (n == cap) {
+				cap = cap ? 2 * cap : 64;
+				pair = xreallocarray(pair, cap, sizeof(*pair));
+			}
+			pair[n][0] = i;
+			pair[n++][1] = j;
+			a->depth++;
+		}
+	}
+	for (i = 0; i < n; i++) {
+		struct inring *a = &rings[pair[i][0]];
+
+		if (a->parent < 0 ||
+		    rings[pair[i][1]].depth > rings[a->parent].depth)
+			a->parent = pair[i][1];
+	}
+	free(pair);
+}
+
+/* Declared roles (wkt, brep) must agree with the nesting. */
+static void
+checkroles(void)
+{
+	size_t i;
+
+	for (i = 0; i < nrings; i++) {
+		struct inring *r = &rings[i], *p;
+
+		if (r->role == UNKNOWN)
+			continue;
+		p = r->parent >= 0 ? &rings[r->parent] : NULL;
+		if (r->role == OUTER && p != NULL && p->role != HOLE)
+			errat(r->file, r->firstline, "polygon of ring %ld lies "
+			    "inside polygon of ring %ld", ringno(r), ringno(p));
+		if (r->role == HOLE && p != NULL && p->role == HOLE)
+			errat(r->file, r->firstline, "hole ring %ld lies inside "
+			    "hole ring %ld", ringno(r), ringno(p));
+		if (r->role == HOLE && (p == NULL || p->poly != r->poly))
+			errat(r->file, r->firstline, "hole ring %ld lies "
+			    "outside its shell", ringno(r));
+	}
+}
+
+static void
+checkedges(void)
+{
+	size_t i, j, n = 0, *list;
+	double box[4];
+
+	for (i = 0; i < nrings; i++)
+		n += rings[i].n;
+	edges = xreallocarray(NULL, n, sizeof(*edges));
+	list = xreallocarray(NULL, n, sizeof(*list));
+	n = 0;
+	for (i = 0; i < nrings; i++)
+		for (j = 0; j < rings[i].n; j++) {
+			struct edge *e = &edges[n];
+			struct point a, b;
+
+			e->ring = i;
+			e->i = j;
+			a = ep(e, 0);
+			b = ep(e, 1);
+			e->xmin = fmin(a.x, b.x);
+			e->xmax = fmax(a.x, b.x);
+			e->ymin = fmin(a.y, b.y);
+			e->ymax = fmax(a.y, b.y);
+			if (n == 0) {
+				box[0] = e->xmin, box[1] = e->ymin;
+				box[2] = e->xmax, box[3] = e->ymax;
+			}
+			box[0] = fmin(box[0], e->xmin);
+			box[1] = fmin(box[1], e->ymin);
+			box[2] = fmax(box[2], e->xmax);
+			box[3] = fmax(box[3], e->ymax);
+			list[n] = n;
+			n++;
+		}
+	if (n > 0)
+		crossings(list, n, box, 0);
+	free(list);
+	free(edges);
+}
+
+/* Exact orientation of a simple ring: the turn at its lowest-left vertex. */
+static int
+ringsign(const struct inring *r)
+{
+	size_t i, m = 0;
+	struct point a, b, c;
+
+	for (i = 1; i < r->n; i++)
+		if (r->v[i].x < r->v[m].x ||
+		    (r->v[i].x == r->v[m].x && r->v[i].y < r->v[m].y))
+			m = i;
+	a = r->v[(m + r->n - 1) % r->n];
+	b = r->v[m];
+	c = r->v[(m + 1) % r->n];
+	return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
+}
+
+static void
+reverse(struct inring *r)
+{
+	size_t i, j;
+
+	for (i = 0, j = r->n - 1; i < j; i++, j--) {
+		struct point t = r->v[i];
+		long l = r->line[i];
+
+		r->v[i] = r->v[j];
+		r->v[j] = t;
+		r->line[i] = r->line[j];
+		r->line[j] = l;
+	}
+}
+
+/* The bounding box, squared up from its lower left corner. */
+static void
+defaultuniverse(struct universe *u)
+{
+	double xmin, ymin, xmax, ymax;
+	size_t i;
+
+	if (nrings == 0) {
+		u->x0 = u->y0 = 0;
+		u->size = 1;
+		return;
+	}
+	xmin = rings[0].xmin, ymin = rings[0].ymin;
+	xmax = rings[0].xmax, ymax = rings[0].ymax;
+	for (i = 1; i < nrings; i++) {
+		xmin = fmin(xmin, rings[i].xmin);
+		ymin = fmin(ymin, rings[i].ymin);
+		xmax = fmax(xmax, rings[i].xmax);
+		ymax = fmax(ymax, rings[i].ymax);
+	}
+	u->x0 = xmin;
+	u->y0 = ymin;
+	u->size = fmax(xmax - xmin, ymax - ymin);
+	while (u->x0 + u->size < xmax || u->y0 + u->size < ymax)
+		u->size = nextafter(u->size, INFINITY);
+}
+
+static void
+checkuniverse(const struct universe *u, const char *how)
+{
+	size_t i, j;
+
+	for (i = 0; i < nrings; i++)
+		for (j = 0; j < rings[i].n; j++) {
+			struct point p = rings[i].v[j];
+
+			if (p.x < u->x0 || p.y < u->y0 ||
+			    p.x > u->x0 + u->size || p.y > u->y0 + u->size)
+				errat(rings[i].file, rings[i].line[j], "vertex "
+				    "lies outside the universe %s", how);
+		}
+}
+
+static void
+checkseeds(void)
+{
+	size_t i, j;
+
+	for (i = 0; i < nseeds; i++) {
+		int inside = 0;
+
+		for (j = 0; j < nrings; j++)
+			inside ^= ring_contains(rings[j].v, rings[j].n,
+			    seeds[i], seeds[i]);
+		if (inside)
+			errat(seedfile[i], seedline[i], "hole point lies inside "
+			    "the region its rings bound");
+	}
+}
+
+static void
+parseuniverse(const char *arg)
+{
+	const char *p = arg, *end;
+	double v[3];
+	int i;
+
+	for (i = 0; i < 3; i++) {
+		if (parsereal(p, &end, &v[i]) < 0 || !coordok(v[i]))
+			die(2, "-u: expected x0,y0,size: %s", arg);
+		p = end;
+		if (i < 2 && *p++ != ',')
+			die(2, "-u: expected x0,y0,size: %s", arg);
+	}
+	if (*p != '\0' || v[2] <= 0)
+		die(2, "-u: expected x0,y0,size with size > 0: %s", arg);
+	given.x0 = v[0];
+	given.y0 = v[1];
+	given.size = v[2];
+}
+
+int
+main(int argc, char *argv[])
+{
+	enum format format = AUTO;
+	struct universe u;
+	const char *end;
+	long long level = -1;
+	size_t i;
+	int ch, haveu = 0;
+
+	setprogname_(argv[0]);
+	while ((ch = getopt(argc, argv, "f:l:u:")) != -1)
+		switch (ch) {
+		case 'f':
+			if (strcmp(optarg, "brep") == 0)
+				format = BREP;
+			else if (strcmp(optarg, "xy") == 0)
+				format = XY;
+			else if (strcmp(optarg, "wkt") == 0)
+				format = WKT;
+			else if (strcmp(optarg, "poly") == 0)
+				format = POLY;
+			else
+				die(2, "-f: unknown format %s (brep, xy, wkt, "
+				    "poly)", optarg);
+			break;
+		case 'l':
+			if (parselong(optarg, &end, &level) < 0 || *end != '\0' ||
+			    level < 0 || level > QT_MAXLEVEL)
+				die(2, "-l: level must be an integer from 0 to "
+				    "%d: %s", QT_MAXLEVEL, optarg);
+			break;
+		case 'u':
+			parseuniverse(optarg);
+			haveu = 1;
+			break;
+		default:
+			usage();
+		}
+	argc -= optind;
+	argv += optind;
+
+	for (i = 0; i == 0 || (int)i < argc; i++) {
+		struct src s;
+		enum format f;
+
+		readall(&s, argc > 0 ? argv[i] : "-");
+		f = format == AUTO ? detect(&s) : format;
+		s.p = s.buf;
+		s.line = 1;
+		switch (f) {
+		case BREP:
+			parsebrep(&s);
+			break;
+		case XY:
+			parsexy(&s);
+			break;
+		case WKT:
+			parsewkt(&s);
+			break;
+		default:
+			parsepoly(&s);
+			break;
+		}
+		/* rings keep pointers to the name, not to the buffer */
+		free(s.buf);
+	}
+
+	for (i = 0; i < nrings; i++) {
+		tidy(&rings[i]);
+		checkring(&rings[i]);
+	}
+	checkedges();
+	nesting();
+	checkroles();
+	connectivity();
+	checkseeds();
+	if (haveu) {
+		u = given;
+		checkuniverse(&u, "given with -u");
+	} else if (havegiven) {
+		u = given;
+		checkuniverse(&u, "given in the input");
+	} else
+		defaultuniverse(&u);
+	if (level < 0)
+		level = givenlevel;
+
+	qt_header();
+	qt_universe(&u);
+	if (level >= 0)
+		qt_level(level);
+	for (i = 0; i < nrings; i++) {
+		struct inring *r = &rings[i];
+		struct ring out;
+		int hole = r->depth % 2;
+
+		if ((ringsign(r) > 0) == hole)
+			reverse(r);
+		out.id = i + 1;
+		out.hole = hole;
+		out.n = r->n;
+		out.v = r->v;
+		qt_ring(&out);
+	}
+	qt_end();
+	closeout();
+	return 0;
+}
