@@ -1,0 +1,26 @@
+# Shared by every bats file: the built programs first on PATH, a scratch
+# directory per test, and the peer data beside the project when present.
+bats_require_minimum_version 1.5.0
+
+TOP="$(cd "$BATS_TEST_DIRNAME/.." && pwd)"
+PATH="$TOP:$PATH"
+FIXTURES="$TOP/tests/fixtures"
+SAMPLES="$TOP/samples"
+SHARED="$TOP/../shared/data"
+export TOP PATH FIXTURES SAMPLES SHARED
+export LC_ALL=C
+
+setup() {
+	cd "$BATS_TEST_TMPDIR" || return 1
+}
+
+# Skips, visibly, a test that reads ../shared when a clone does not have it.
+need_shared() {
+	[ -d "$SHARED" ] || skip "../shared/data is absent"
+}
+
+# Counts leaves per class: prints "F n", "E n", "P n" (missing classes as 0).
+leafcounts() {
+	awk '$1 == "leaf" { c[$9]++ }
+	    END { printf "F %d\nE %d\nP %d\n", c["F"], c["E"], c["P"] }' "$@"
+}
