@@ -323,7 +323,6 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 				    strerror(errno ? errno : EIO));
 			if (r->state == AFTER_END)
 				return QT_EOF;
-			r->lineno++;
 			if (r->state == BEFORE_HEADER)
 				qt_fail(r, "empty input: not a qtree stream");
 			qt_fail(r, "truncated stream: no end record");

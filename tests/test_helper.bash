@@ -24,3 +24,4 @@ leafcounts() {
 	awk '$1 == "leaf" { c[$9]++ }
 	    END { printf "F %d\nE %d\nP %d\n", c["F"], c["E"], c["P"] }' "$@"
 }
+export -f leafcounts

@@ -149,6 +149,18 @@ skipspace(struct src *s)
 	}
 }
 
+/* The line of the last thing read, for messages about a premature end. */
+static long
+lastline(const struct src *s)
+{
+	const char *p = s->p;
+	long line = s->line;
+
+	while (p > s->buf && isspace((unsigned char)p[-1]))
+		line -= *--p == '\n';
+	return line;
+}
+
 static void
 badtoken(struct src *s, const char *what)
 {
@@ -172,7 +184,7 @@ number(struct src *s, const char *what)
 	int rc;
 
 	if (!skipspace(s))
-		errat(s->name, s->line, "input ends where %s was expected",
+		errat(s->name, lastline(s), "input ends where %s was expected",
 		    what);
 	if ((rc = parsereal(s->p, &end, &v)) == -2)
 		badtoken(s, "number out of range");
@@ -219,7 +231,7 @@ parsebrep(struct src *s)
 		long line;
 
 		if (!skipspace(s))
-			errat(s->name, s->line, "input ends after %lld of %lld "
+			errat(s->name, lastline(s), "input ends after %lld of %lld "
 			    "polygon vertices", i, nv);
 		line = s->line;
 		x = number(s, "x");
@@ -234,7 +246,7 @@ parsebrep(struct src *s)
 			long line;
 
 			if (!skipspace(s))
-				errat(s->name, s->line, "input ends after %lld "
+				errat(s->name, lastline(s), "input ends after %lld "
 				    "of %lld hole vertices", i, nh);
 			line = s->line;
 			x = number(s, "x");
@@ -247,7 +259,7 @@ parsebrep(struct src *s)
 	uline = s->line;
 	for (i = 0; i < 4; i++) {
 		if (!skipspace(s))
-			errat(s->name, s->line, "input ends after %lld of the "
+			errat(s->name, lastline(s), "input ends after %lld of the "
 			    "4 universe corners", i);
 		cx[i] = number(s, "universe x");
 		cy[i] = number(s, "universe y");
@@ -293,6 +305,19 @@ parsebrep(struct src *s)
 	givenlevel = level;
 }
 
+static double
+xynumber(struct src *s, const char *q, const char **end)
+{
+	double v;
+	int rc = parsereal(q, end, &v);
+
+	if (rc == -2)
+		badtoken(s, "number out of range");
+	if (rc < 0 || !(isspace((unsigned char)**end) || **end == '\0'))
+		badtoken(s, "not a number");
+	return v;
+}
+
 static void
 parsexy(struct src *s)
 {
@@ -319,15 +344,13 @@ parsexy(struct src *s)
 			continue;
 		s->line = line;
 		s->p = (char *)q;
-		if (parsereal(q, &end, &x) < 0)
-			badtoken(s, "not a number");
+		x = xynumber(s, q, &end);
 		for (q = end; *q == ' ' || *q == '\t'; q++)
 			;
-		if (q == end)
+		if (q == end || q == eol || *q == '\r')
 			errat(s->name, line, "expected two numbers, x y");
 		s->p = (char *)q;
-		if (parsereal(q, &end, &y) < 0)
-			badtoken(s, "not a number");
+		y = xynumber(s, q, &end);
 		for (q = end; q < eol && isspace((unsigned char)*q); q++)
 			;
 		if (q != eol)
@@ -359,7 +382,7 @@ punct(struct src *s, int c)
 	if (!skipspace(s) || *s->p != c) {
 		snprintf(what, sizeof(what), "expected '%c'", c);
 		if (*s->p == '\0')
-			errat(s->name, s->line, "input ends: %s", what);
+			errat(s->name, lastline(s), "input ends: %s", what);
 		badtoken(s, what);
 	}
 	s->p++;
@@ -488,7 +511,7 @@ parsepoly(struct src *s)
 		long long id;
 
 		if (!skipspace(s))
-			errat(s->name, s->line, "input ends after %lld of %lld "
+			errat(s->name, lastline(s), "input ends after %lld of %lld "
 			    "vertices", i, nv);
 		id = integer(s, "vertex number", 0, (long long)1 << 40);
 		if (i == 0)
@@ -512,7 +535,7 @@ parsepoly(struct src *s)
 	cap = 0;
 	for (i = 0; i < nseg; i++) {
 		if (!skipspace(s))
-			errat(s->name, s->line, "input ends after %lld of %lld "
+			errat(s->name, lastline(s), "input ends after %lld of %lld "
 			    "segments", i, nseg);
 		integer(s, "segment number", 0, (long long)1 << 40);
 		if ((size_t)i == cap) {
@@ -532,7 +555,7 @@ parsepoly(struct src *s)
 		nholes = integer(s, "number of holes", 0, (long long)1 << 40);
 		for (i = 0; i < nholes; i++) {
 			if (!skipspace(s))
-				errat(s->name, s->line, "input ends after %lld "
+				errat(s->name, lastline(s), "input ends after %lld "
 				    "of %lld holes", i, nholes);
 			integer(s, "hole number", 0, (long long)1 << 40);
 			seeds = xreallocarray(seeds, nseeds + 1,
@@ -554,7 +577,7 @@ parsepoly(struct src *s)
 
 		for (i = 0; i < nreg; i++) {
 			if (!skipspace(s))
-				errat(s->name, s->line, "input ends after %lld "
+				errat(s->name, lastline(s), "input ends after %lld "
 				    "of %lld regions", i, nreg);
 			integer(s, "region number", 0, (long long)1 << 40);
 			number(s, "x");
@@ -688,15 +711,19 @@ static void
 checkring(struct inring *r)
 {
 	size_t i, far = 0;
+	int third = 0;
 
-	if (r->n < 3)
-		errat(r->file, r->firstline, "ring %ld has fewer than 3 "
-		    "distinct vertices", ringno(r));
 	for (i = 1; i < r->n; i++)
 		if (r->v[i].x != r->v[0].x || r->v[i].y != r->v[0].y) {
 			far = i;
 			break;
 		}
+	for (i = 1; far > 0 && i < r->n && !third; i++)
+		third = (r->v[i].x != r->v[0].x || r->v[i].y != r->v[0].y) &&
+		    (r->v[i].x != r->v[far].x || r->v[i].y != r->v[far].y);
+	if (!third)
+		errat(r->file, r->firstline, "ring %ld has fewer than 3 "
+		    "distinct vertices", ringno(r));
 	for (i = 1; i < r->n; i++)
 		if (orient2d(r->v[0].x, r->v[0].y, r->v[far].x, r->v[far].y,
 		    r->v[i].x, r->v[i].y) != 0)

@@ -1,0 +1,285 @@
+#!/usr/bin/env bats
+# polyread: every input format, the round trips, and every validation error.
+
+load test_helper
+
+@test "brep: the report's case 1 keeps its numbers, level and universe" {
+	run -0 polyread "$SAMPLES/amoeba.brep"
+	[ "${lines[0]}" = "qtree 1" ]
+	[ "${lines[1]}" = "universe 4 4 12.2" ]
+	[ "${lines[2]}" = "level 6" ]
+	[ "${lines[3]}" = "ring 1 outer 40" ]
+	[ "${lines[4]}" = "v 9 6" ]
+	[ "${lines[5]}" = "v 10 5.7" ]
+	[ "${lines[44]}" = "ring 2 hole 4" ]
+	[ "${lines[49]}" = "end 48" ]
+	[ "${#lines[@]}" -eq 50 ]
+}
+
+@test "brep: outer rings come out counter-clockwise and holes clockwise" {
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | awk -f "$TOP/tests/ringsigns.awk"'
+	[ "$output" = "1 outer ccw
+2 hole cw" ]
+}
+
+@test "brep: a clockwise polygon is reversed" {
+	printf '3 0 2\n0 0 0 1 1 0\n0 0 0 2 2 2 2 0\n' > cw.brep
+	run -0 polyread cw.brep
+	[ "${lines[3]}" = "ring 1 outer 3" ]
+	[ "${lines[4]} ${lines[5]} ${lines[6]}" = "v 1 0 v 0 1 v 0 0" ]
+}
+
+@test "brep: universe corners in any order; not a square is an error" {
+	printf '3 0 2\n1 1 2 1 1 2\n2 2 0 0 0 2 2 0\n' > u.brep
+	run -0 polyread u.brep
+	[ "${lines[1]}" = "universe 0 0 2" ]
+	printf '3 0 2\n1 1 2 1 1 2\n0 0 3 0 3 2 0 2\n' > r.brep
+	run -1 --separate-stderr polyread r.brep
+	[ "$stderr" = "polyread: r.brep:3: universe corners do not form a square (3 wide, 2 high)" ]
+	[ -z "$output" ]
+}
+
+@test "brep: counts that lie are caught where the input ends" {
+	printf '1000000000 0 6\n0 0 1 0 1 1\n' > lie.brep
+	run -1 --separate-stderr polyread lie.brep
+	[ "$stderr" = "polyread: lie.brep:2: input ends after 3 of 1000000000 polygon vertices" ]
+}
+
+@test "xy: ring roles follow from nesting, islands in lakes included" {
+	run -0 bash -c 'polyread "$FIXTURES/lakes.xy" | grep "^ring"'
+	[ "$output" = "ring 1 outer 4
+ring 2 hole 4
+ring 3 outer 4
+ring 4 hole 4" ]
+}
+
+@test "xy: the default universe is the bounding box squared up from its lower left" {
+	printf '1 2\n5 2\n5 4\n1 4\n' > wide.xy
+	run -0 polyread wide.xy
+	[ "${lines[1]}" = "universe 1 2 4" ]
+	printf '0.1 0.1\n0.3 0.1\n0.3 0.3\n' > tri.xy
+	run -0 polyread tri.xy
+	# 0.3 - 0.1 rounds below 0.2, and 0.1 + 0.19999999999999998 reaches 0.3
+	[ "${lines[1]}" = "universe 0.1 0.1 0.19999999999999998" ]
+	awk 'BEGIN { exit !(0.1 + 0.19999999999999998 >= 0.3) }'
+}
+
+@test "xy: a closing vertex and consecutive duplicates are dropped" {
+	printf '0 0\n0 0\n4 0\n4 4\n4 4\n0 4\n0 0\n' > dup.xy
+	run -0 polyread dup.xy
+	[ "${lines[2]}" = "ring 1 outer 4" ]
+	[ "${lines[7]}" = "end 6" ]
+}
+
+@test "wkt: POLYGON and MULTIPOLYGON, several per input, any case" {
+	cat > m.wkt <<-'EOF'
+	polygon ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 3, 3 3, 3 1, 1 1))
+	MULTIPOLYGON (((10 0, 12 0, 12 2, 10 0)), ((20 0, 22 0, 22 2, 20 0)))
+	EOF
+	run -0 bash -c 'polyread m.wkt | grep "^ring"'
+	[ "$output" = "ring 1 outer 4
+ring 2 hole 4
+ring 3 outer 3
+ring 4 outer 3" ]
+}
+
+@test "wkt: an island inside a hole is a polygon of its own" {
+	echo 'MULTIPOLYGON (((0 0, 9 0, 9 9, 0 9, 0 0), (1 1, 1 8, 8 8, 8 1, 1 1)), ((2 2, 7 2, 7 7, 2 7, 2 2)))' > i.wkt
+	run -0 bash -c 'polyread i.wkt | grep "^ring"'
+	[ "$output" = "ring 1 outer 4
+ring 2 hole 4
+ring 3 outer 4" ]
+}
+
+@test "poly: rings are rebuilt from Triangle's segments" {
+	cat > sq.poly <<-'EOF'
+	# a square with a square hole; vertices numbered from 1
+	8 2 0 1
+	1 0 0 1
+	2 4 0 1
+	3 4 4 1
+	4 0 4 1
+	5 1 1 0
+	6 3 1 0
+	7 3 3 0
+	8 1 3 0
+	8 0
+	1 1 2
+	2 2 3
+	3 3 4
+	4 4 1
+	5 5 6
+	6 6 7
+	7 7 8
+	8 8 5
+	1
+	1 2 2
+	EOF
+	run -0 bash -c 'polyread sq.poly | awk -f "$TOP/tests/ringsigns.awk"'
+	[ "$output" = "1 outer ccw
+2 hole cw" ]
+}
+
+@test "poly: a hole point inside the region is an error" {
+	printf '3 2 0 0\n1 0 0\n2 4 0\n3 0 4\n3 0\n1 1 2\n2 2 3\n3 3 1\n1\n1 1 1\n' > bad.poly
+	run -1 --separate-stderr polyread bad.poly
+	[ "$stderr" = "polyread: bad.poly:10: hole point lies inside the region its rings bound" ]
+}
+
+@test "formats are detected, and -f forces one" {
+	printf '0 0\n1 0\n0 1\n' > t.txt
+	run -0 polyread t.txt
+	[ "${lines[2]}" = "ring 1 outer 3" ]
+	run -1 --separate-stderr polyread -f wkt t.txt
+	[ "$stderr" = "polyread: t.txt:1: expected POLYGON or MULTIPOLYGON: 0" ]
+	run -2 --separate-stderr polyread -f shp t.txt
+	[[ "$stderr" == "polyread: -f: unknown format shp"* ]]
+}
+
+@test "round trip: qtree rings back to xy read to the same stream" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	awk '$1 == "ring" && NR > 4 { print "" } $1 == "v" { print $2, $3 }' a.qt > a.xy
+	polyread -u 4,4,12.2 -l 6 a.xy > b.qt
+	diff -u a.qt b.qt
+}
+
+@test "round trip: qtree rings to WKT read to the same stream" {
+	polyread "$FIXTURES/lakes.xy" > l.qt
+	awk '$1 == "ring" { if (s) print s ", " f "))"; s = "POLYGON (("; sep = ""; f = "" }
+	    $1 == "v" { s = s sep $2 " " $3; sep = ", "; if (f == "") f = $2 " " $3 }
+	    END { print s ", " f "))" }' l.qt > l.wkt
+	# as four separate polygons the nesting makes them overlap, so join the
+	# lake and the island into their polygons by hand
+	awk 'NR == 1 { a = $0 } NR == 2 { b = $0 } NR == 3 { c = $0 } NR == 4 { d = $0 }
+	    END { sub(/\)\)$/, "), ", a); sub(/^POLYGON \(/, "", b); print "MULTIPOLYGON ((" substr(a, 10) b ",";
+		  sub(/\)\)$/, "), ", c); sub(/^POLYGON \(/, "", d); print "(" substr(c, 10) d ")" }' l.wkt > m.wkt
+	polyread -f wkt m.wkt > m.qt
+	diff -u l.qt m.qt
+}
+
+@test "-u sets the universe and -l the level" {
+	run -0 polyread -u -1,-1,10 -l 9 "$FIXTURES/square.xy"
+	[ "${lines[1]}" = "universe -1 -1 10" ]
+	[ "${lines[2]}" = "level 9" ]
+	run -2 --separate-stderr polyread -u 1,2 "$FIXTURES/square.xy"
+	[ "$stderr" = "polyread: -u: expected x0,y0,size: 1,2" ]
+	run -2 --separate-stderr polyread -l 99 "$FIXTURES/square.xy"
+	[[ "$stderr" == "polyread: -l: level must be an integer from 0 to "* ]]
+}
+
+@test "a polygon outside the universe is an error" {
+	run -1 --separate-stderr polyread -u 0,0,2 "$FIXTURES/square.xy"
+	[ "$stderr" = "polyread: $FIXTURES/square.xy:3: vertex lies outside the universe given with -u" ]
+	[ -z "$output" ]
+}
+
+@test "fewer than 3 distinct vertices is an error" {
+	printf '0 0\n1 1\n0 0\n1 1\n' > two.xy
+	run -1 --separate-stderr polyread two.xy
+	[ "$stderr" = "polyread: two.xy:1: ring 1 has fewer than 3 distinct vertices" ]
+}
+
+@test "something that is not a number is an error" {
+	printf '0 0\n1 x\n0 1\n' > nan.xy
+	run -1 --separate-stderr polyread nan.xy
+	[ "$stderr" = "polyread: nan.xy:2: not a number: x" ]
+}
+
+@test "NaN, Inf and hexadecimal numbers are refused" {
+	for v in NaN nan Inf -inf 0x1p3 infinity; do
+		printf '0 0\n1 %s\n0 1\n' "$v" > v.xy
+		run -1 --separate-stderr polyread v.xy
+		[ "$stderr" = "polyread: v.xy:2: not a number: $v" ]
+	done
+	printf '0 0\n1 1e400\n0 1\n' > big.xy
+	run -1 --separate-stderr polyread big.xy
+	[ "$stderr" = "polyread: big.xy:2: number out of range: 1e400" ]
+}
+
+@test "zero area is an error" {
+	printf '0 0\n1 1\n2 2\n' > flat.xy
+	run -1 --separate-stderr polyread flat.xy
+	[ "$stderr" = "polyread: flat.xy:1: ring 1 has zero area" ]
+}
+
+@test "a ring that crosses itself: both edges and the point are named" {
+	printf '0 0\n4 4\n4 0\n0 4\n' > bow.xy
+	run -1 --separate-stderr polyread bow.xy
+	[ "$stderr" = "polyread: bow.xy:1: ring 1 edge 1 (line 1) crosses ring 1 edge 3 (line 3) at 2 2" ]
+}
+
+@test "a ring that crosses another ring is an error" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n3 1\n5 1\n5 2\n3 2\n' > two.xy
+	run -1 --separate-stderr polyread two.xy
+	[[ "$stderr" == "polyread: two.xy:"*" crosses ring "*" at 4 "[12] ]]
+}
+
+@test "rings that overlap along an edge are an error" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n4 0\n8 0\n8 4\n4 4\n' > side.xy
+	run -1 --separate-stderr polyread side.xy
+	[[ "$stderr" == *"overlaps ring"* ]]
+}
+
+@test "wkt: a hole outside its shell or inside another hole is an error" {
+	echo 'POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (5 5, 6 5, 6 6, 5 5))' > out.wkt
+	run -1 --separate-stderr polyread out.wkt
+	[ "$stderr" = "polyread: out.wkt:1: hole ring 2 lies outside its shell" ]
+	echo 'POLYGON ((0 0, 9 0, 9 9, 0 9, 0 0), (1 1, 1 8, 8 8, 8 1, 1 1), (2 2, 2 7, 7 7, 7 2, 2 2))' > in.wkt
+	run -1 --separate-stderr polyread in.wkt
+	[ "$stderr" = "polyread: in.wkt:1: hole ring 3 lies inside hole ring 2" ]
+}
+
+@test "rings that touch at one point are valid; at two they cut the interior" {
+	run -0 polyread "$FIXTURES/touch.wkt"
+	echo 'POLYGON ((0 0, 6 0, 6 6, 0 6, 0 0), (0 4, 2 2, 6 2, 0 4))' > cut.wkt
+	run -1 --separate-stderr polyread cut.wkt
+	[[ "$stderr" == "polyread: cut.wkt:1: interior is disconnected"* ]]
+}
+
+@test "the message names the file and line of the offending vertex" {
+	printf '# header\n\n0 0\n4 0\n4 4\n0 4\n0 0\n2 -1\n' > late.xy
+	run -1 --separate-stderr polyread late.xy
+	[[ "$stderr" == "polyread: late.xy:"[3-8]": "* ]]
+}
+
+@test "standard input is read when no file is given, and - names it" {
+	run -0 bash -c 'polyread < "$FIXTURES/square.xy" | sed -n 2p'
+	[ "$output" = "universe 1 1 2" ]
+	run -1 --separate-stderr bash -c 'printf "0 0\n1 x\n" | polyread -'
+	[ "$stderr" = "polyread: stdin:2: not a number: x" ]
+}
+
+@test "an unknown option is a usage error" {
+	run -2 --separate-stderr polyread -z
+	[[ "${stderr_lines[1]}" == "usage: polyread "* ]]
+}
+
+@test "GEOS validity suite: polyread agrees with every expected verdict" {
+	need_shared
+	cases="$SHARED/geos-valid/cases.tsv"
+	[ -f "$cases" ] || skip "no $cases"
+	n=0
+	while IFS="$(printf '\t')" read -r id expected desc wkt; do
+		[ "$id" = id ] && continue
+		printf '%s\n' "$wkt" > c.wkt
+		if polyread c.wkt > /dev/null 2> err; then got=true; else got=false; fi
+		if [ "$got" != "$expected" ]; then
+			echo "$id expected $expected: $desc: $(cat err)"
+			return 1
+		fi
+		n=$((n + 1))
+	done < "$cases"
+	[ "$n" -eq 51 ]
+}
+
+@test "real polygons from ../shared/data read as valid" {
+	need_shared
+	for f in "$SHARED"/countries/*.xy "$SHARED"/lakes/*.xy "$SHARED"/triangle/*.xy; do
+		polyread "$f" > out.qt || { echo "rejected $f"; return 1; }
+		holes=$(grep -c ' hole ' out.qt || true)
+		rings=$(grep -c '^ring ' out.qt)
+		blank=$(grep -c '^$' "$f" || true)
+		[ "$rings" -eq $((blank + 1)) ]
+		[ "$holes" -eq "$blank" ]
+	done
+}

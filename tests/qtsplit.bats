@@ -1,0 +1,201 @@
+#!/usr/bin/env bats
+# qtsplit: the classification rule, the tree's structure, and the report's cases.
+
+load test_helper
+
+@test "amoeba at level 6: 291 F, 320 E, 344 P as the exact reference gives" {
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | leafcounts'
+	[ "$output" = "F 291
+E 320
+P 344" ]
+}
+
+@test "amoeba at level 10: 5307 F, 5686 E, 5553 P as the exact reference gives" {
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 10 | leafcounts'
+	[ "$output" = "F 5307
+E 5686
+P 5553" ]
+}
+
+@test "the report's case 5 stops at level 1 with 3 F and 1 E whatever the level" {
+	for l in 1 2 8 30; do
+		polyread "$SAMPLES/invl.brep" | qtsplit -l $l > t.qt
+		run -0 grep -E '^(node|leaf)' t.qt
+		[ "$output" = "node . 0 0 0 0 0 2
+leaf 0 1 0 0 0 0 1 F
+leaf 1 1 1 0 1 0 1 E
+leaf 2 1 0 1 0 1 1 F
+leaf 3 1 1 1 1 1 1 F" ]
+	done
+}
+
+@test "edges along cell lines do not make cells partial" {
+	# the square 1..3 in the universe 0..4: at level 2 its sides are cell
+	# lines, so the four middle cells are full and the rest empty
+	polyread -u 0,0,4 "$FIXTURES/square.xy" | qtsplit -l 5 > s.qt
+	run -0 leafcounts s.qt
+	[ "$output" = "F 4
+E 12
+P 0" ]
+	run -0 awk '$1 == "leaf" && $9 == "F" { print $2 }' s.qt
+	[ "$output" = "03
+12
+21
+30" ]
+	# at level 1 each quadrant holds a corner of the square: all partial
+	polyread -u 0,0,4 "$FIXTURES/square.xy" | qtsplit -l 1 > s1.qt
+	run -0 leafcounts s1.qt
+	[ "$output" = "F 0
+E 0
+P 4" ]
+}
+
+@test "edges through cell corners: the diamond at level 2, counted by hand" {
+	# |x-2| + |y-2| <= 2 in 0..4: the 8 cells on the diagonals are crossed,
+	# the 4 middle cells are full, the 4 corner cells are touched at one
+	# corner only and are empty
+	polyread -u 0,0,4 -l 2 "$FIXTURES/diamond.xy" | qtsplit > d.qt
+	run -0 leafcounts d.qt
+	[ "$output" = "F 4
+E 4
+P 8" ]
+	run -0 awk '$1 == "leaf" && $9 == "E" { print $2 }' d.qt
+	[ "$output" = "00
+11
+22
+33" ]
+}
+
+@test "a hole exactly on cell lines is an empty cell, not a partial one" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 3\n3 3\n3 1\n' > h.xy
+	polyread h.xy | qtsplit -l 2 > h.qt
+	run -0 leafcounts h.qt
+	[ "$output" = "F 12
+E 4
+P 0" ]
+}
+
+@test "rings touching at a cell corner decompose correctly" {
+	polyread "$FIXTURES/touch.wkt" | qtsplit -l 6 > t.qt
+	run -0 awk -f "$TOP/tests/cellcheck.awk" t.qt
+	[ "${lines[0]}" = "checked $(awk '$1 == "leaf" && $9 != "P"' t.qt | wc -l | tr -d ' ')" ]
+	[ "${#lines[@]}" -eq 1 ]
+}
+
+@test "F leaves lie inside and E leaves outside, by an independent test" {
+	for f in "$SAMPLES"/*; do
+		polyread "$f" | qtsplit -l 8 > c.qt
+		run -0 awk -f "$TOP/tests/cellcheck.awk" c.qt
+		[[ "${lines[0]}" == "checked "* ]] || { echo "$f: $output"; return 1; }
+		[ "${#lines[@]}" -eq 1 ]
+		[ "${lines[0]}" != "checked 0" ]
+	done
+}
+
+@test "area of F leaves <= polygon area <= area of F and P leaves" {
+	for f in "$SAMPLES"/*; do
+		for l in 3 6 9; do
+			polyread "$f" | qtsplit -l $l | awk -f "$TOP/tests/area.awk" > a.txt
+			awk '{ v[$1] = $2 } END { exit !(v["full"] <= v["poly"] &&
+			    v["poly"] <= v["full"] + v["partial"] && v["poly"] > 0) }' a.txt ||
+			    { echo "$f level $l: $(cat a.txt)"; return 1; }
+		done
+	done
+}
+
+@test "cells are in preorder with PATH, LEVEL, IX, IY, X, Y and SIZE consistent" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 9 > a.qt
+	run -0 awk -f "$TOP/tests/treecheck.awk" a.qt
+	[ "${#lines[@]}" -eq 1 ]
+	[ "${lines[0]}" = "cells $(grep -cE '^(node|leaf)' a.qt)" ]
+	# sorting the cell records by PATH reproduces their order
+	grep -E '^(node|leaf)' a.qt > cells
+	LC_ALL=C sort -s -k2,2 cells | cmp - cells
+	# every node has four children: cells = 1 + 4 nodes
+	[ "$(wc -l < cells)" -eq $((1 + 4 * $(grep -c '^node' cells))) ]
+}
+
+@test "the end record counts the records between header and end" {
+	polyread "$SAMPLES/plane.wkt" | qtsplit -l 7 > p.qt
+	n=$(awk 'NR > 1 && !/^#/ && $1 != "end"' p.qt | wc -l)
+	[ "$(tail -n 1 p.qt)" = "end $n" ]
+}
+
+@test "a truncated stream is reported, not decomposed" {
+	polyread "$SAMPLES/amoeba.brep" | sed '$d' > cut.qt
+	run -1 --separate-stderr qtsplit cut.qt
+	[ "$stderr" = "qtsplit: cut.qt:49: truncated stream: no end record" ]
+	[ -z "$output" ]
+}
+
+@test "-r builds the subtree equal to the matching slice of the full tree" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 9 > full.qt
+	for p in 0 03 0012 0021; do
+		polyread "$SAMPLES/amoeba.brep" | qtsplit -l 9 -r $p > sub.qt
+		awk -v p=$p '($1 == "node" || $1 == "leaf") && index($2, p) == 1' full.qt > want
+		grep -E '^(node|leaf)' sub.qt > got
+		[ -s want ]
+		diff -u want got
+		run -0 awk -f "$TOP/tests/treecheck.awk" sub.qt
+	done
+}
+
+@test "-r of a cell below a leaf is an error" {
+	run -1 --separate-stderr bash -c 'polyread "$SAMPLES/invl.brep" | qtsplit -r 123'
+	[ "$stderr" = "qtsplit: -r: no cell 123 in the tree: cell 1 is a leaf" ]
+}
+
+@test "-m splits every cell down to the minimum level" {
+	polyread "$SAMPLES/invl.brep" | qtsplit -m 3 -l 5 > m.qt
+	run -0 leafcounts m.qt
+	[ "$output" = "F 48
+E 16
+P 0" ]
+	[ "$(awk '$1 == "leaf" && $3 != 3' m.qt | wc -l)" -eq 0 ]
+}
+
+@test "levels 0 to 30 work, and a level above the maximum is refused" {
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 0 | grep "^leaf"'
+	[ "$output" = "leaf . 0 0 0 4 4 12.2 P" ]
+	# a small triangle in a universe 2^30 wide: at level 30 the cells have
+	# side 1; the hypotenuse x + y = 4 is the diagonal of cells (1,2) and
+	# (2,1) and touches cell (1,1) at its corner only
+	printf '1 1\n3 1\n1 3\n' > tri.xy
+	polyread -u 0,0,1073741824 tri.xy | qtsplit -l 30 > deep.qt
+	run -0 awk '$1 == "leaf" && $3 == 30 && $9 != "E" { print $4, $5, $9 }' deep.qt
+	[ "$output" = "1 1 F
+2 1 P
+1 2 P" ]
+	run -2 --separate-stderr qtsplit -l 51 deep.qt
+	[ "$stderr" = "qtsplit: -l: level must be an integer from 0 to 50: 51" ]
+}
+
+@test "the stream's level record is the default, else the report's 6" {
+	run -0 bash -c 'polyread -l 3 "$SAMPLES/amoeba.brep" | qtsplit | awk "\$1 == \"leaf\" { d = \$3 > d ? \$3 : d } END { print d }"'
+	[ "$output" = 3 ]
+	run -0 bash -c 'polyread "$SAMPLES/apple.xy" | qtsplit | sed -n 3p'
+	[ "$output" = "level 6" ]
+}
+
+@test "unknown records pass through unchanged" {
+	polyread "$FIXTURES/square.xy" | sed '2a\
+colour red 1.50' > u.qt
+	n=$(awk 'NR > 1 && $1 != "end"' u.qt | wc -l)
+	sed -i "\$s/.*/end $n/" u.qt
+	run -0 bash -c 'qtsplit -l 1 u.qt | grep "^colour"'
+	[ "$output" = "colour red 1.50" ]
+}
+
+@test "a stream that already holds cells is refused" {
+	polyread "$FIXTURES/square.xy" | qtsplit -l 1 > t.qt
+	run -1 --separate-stderr qtsplit t.qt
+	[ "$stderr" = "qtsplit: t.qt:9: the input already holds cells: qtsplit takes rings" ]
+}
+
+@test "every sample decomposes down to its level" {
+	for f in "$SAMPLES"/*; do
+		case $f in *.svg) continue ;; esac
+		run -0 bash -c "polyread '$f' | qtsplit -l 7 | tail -n 1"
+		[[ "$output" == "end "* ]]
+	done
+}
