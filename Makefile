@@ -38,7 +38,8 @@ test: all
 	bats tests
 
 demo: all
-	./polyread samples/amoeba.brep | ./qtsplit -l 6 | ./qtstats
+	./polyread samples/amoeba.brep | ./qtsplit -l 6 | awk \
+	    '$$1 == "leaf" { n[$$9]++; t++ } END { printf "amoeba, level 6: %d leaves: %d F, %d E, %d P\n", t, n["F"], n["E"], n["P"] }'
 
 install: all
 	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(MANPREFIX)/man1 \
