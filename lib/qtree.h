@@ -120,6 +120,7 @@ void	 qt_universe(const struct universe *);
 void	 qt_level(int);
 void	 qt_ring(const struct ring *);
 void	 qt_cell(const struct cell *);
+void	 qt_cell_line(const char *, size_t);
 void	 qt_end(void);
 void	 qt_put(const char *, size_t);
 unsigned long long qt_written(void);

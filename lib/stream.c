@@ -498,6 +498,14 @@ qt_cell(const struct cell *c)
 	written++;
 }
 
+/* A cell record its writer formatted itself, newline included. */
+void
+qt_cell_line(const char *line, size_t n)
+{
+	qt_put(line, n);
+	written++;
+}
+
 /* The end record is the promise that the stream is whole. */
 void
 qt_end(void)

@@ -88,20 +88,84 @@ progress(int force)
 	    ncells, deepest, (long)(now - started));
 }
 
+/*
+ * Formatting reals is the costliest part of the output, so each level keeps
+ * its cell size and the last coordinates written, one for even and one for
+ * odd columns and rows: siblings share them.
+ */
+struct coordcache {
+	uint64_t	key[2][2];	/* [x or y][parity] */
+	char		text[2][2][32];
+	size_t		len[2][2];
+	char		size[32];
+	size_t		sizelen;
+};
+
+static struct coordcache cache[QT_MAXLEVEL + 1];
+
+static void
+initcache(void)
+{
+	int l, a, p;
+
+	for (l = 0; l <= QT_MAXLEVEL; l++) {
+		for (a = 0; a < 2; a++)
+			for (p = 0; p < 2; p++)
+				cache[l].key[a][p] = UINT64_MAX;
+		cache[l].sizelen = fmtreal(cache[l].size,
+		    ldexp(u.size, -l)) - cache[l].size;
+	}
+}
+
+static char *
+putcoord(char *p, int level, int axis, uint64_t i)
+{
+	struct coordcache *c = &cache[level];
+	int par = i & 1;
+
+	if (c->key[axis][par] != i) {
+		double v = cellcoord(axis ? u.y0 : u.x0, u.size, level, i);
+
+		c->key[axis][par] = i;
+		c->len[axis][par] = fmtreal(c->text[axis][par], v) -
+		    c->text[axis][par];
+	}
+	memcpy(p, c->text[axis][par], c->len[axis][par]);
+	return p + c->len[axis][par];
+}
+
 static void
 emit(int level, uint64_t ix, uint64_t iy, char class)
 {
-	struct cell c;
+	char line[256], *p = line;
 
-	c.path = level == 0 ? "." : path;
-	c.level = level;
-	c.ix = ix;
-	c.iy = iy;
-	c.x = cellcoord(u.x0, u.size, level, ix);
-	c.y = cellcoord(u.y0, u.size, level, iy);
-	c.size = ldexp(u.size, -level);
-	c.class = class;
-	qt_cell(&c);
+	memcpy(p, class ? "leaf " : "node ", 5);
+	p += 5;
+	if (level == 0)
+		*p++ = '.';
+	else {
+		memcpy(p, path, level);
+		p += level;
+	}
+	*p++ = ' ';
+	p = fmtint(p, level);
+	*p++ = ' ';
+	p = fmtint(p, (long long)ix);
+	*p++ = ' ';
+	p = fmtint(p, (long long)iy);
+	*p++ = ' ';
+	p = putcoord(p, level, 0, ix);
+	*p++ = ' ';
+	p = putcoord(p, level, 1, iy);
+	*p++ = ' ';
+	memcpy(p, cache[level].size, cache[level].sizelen);
+	p += cache[level].sizelen;
+	if (class) {
+		*p++ = ' ';
+		*p++ = class;
+	}
+	*p++ = '\n';
+	qt_cell_line(line, p - line);
 	if (level > deepest)
 		deepest = level;
 	if ((++ncells & 0xfffff) == 0)
@@ -399,6 +463,7 @@ main(int argc, char *argv[])
 		    maxlevel);
 
 	started = lastreport = time(NULL);
+	initcache();
 	qt_header();
 	qt_universe(&u);
 	qt_level(maxlevel);
