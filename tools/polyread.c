@@ -638,48 +638,37 @@ parsepoly(struct src *s)
 	free(seg);
 }
 
+/*
+ * wkt when the first word starts with a letter; otherwise the first line
+ * that holds data decides: two fields make xy, four integers with the
+ * second 2 make poly (Triangle's header), anything else brep.
+ */
 static enum format
 detect(struct src *s)
 {
-	char *p = s->buf;
-	int allxy = 1, first = 1, fourints = 0;
+	const char *p;
+	int n = 0, ints = 0;
 
 	s->p = s->buf;
-	if (skipspace(s) && isalpha((unsigned char)*s->p))
+	if (!skipspace(s))
+		errat(s->name, lastline(s), "no polygon in the input");
+	if (isalpha((unsigned char)*s->p))
 		return WKT;
-	for (; *p != '\0'; p += strcspn(p, "\n"), p += *p == '\n') {
-		char *q = p;
-		int n = 0, ints = 0;
+	for (p = s->p; *p != '\n' && *p != '\0' && *p != '#'; ) {
+		size_t len;
 
-		while (*q != '\n' && *q != '\0' && *q != '#') {
-			while (*q == ' ' || *q == '\t' || *q == '\r')
-				q++;
-			if (*q == '\n' || *q == '\0' || *q == '#')
-				break;
-			n++;
-			{
-				char *t = q;
-
-				while (*q != '\n' && *q != '\0' &&
-				    !isspace((unsigned char)*q) && *q != '#')
-					q++;
-				ints += strspn(t, "0123456789") ==
-				    (size_t)(q - t);
-				if (n == 2 && !(q - t == 1 && *t == '2'))
-					ints -= 100;
-			}
-		}
-		if (n == 0)
-			continue;
-		if (first)
-			fourints = n == 4 && ints == 4;
-		first = 0;
-		if (n != 2)
-			allxy = 0;
+		p += strspn(p, " \t\r\f\v");
+		if ((len = strcspn(p, " \t\r\f\v\n#")) == 0)
+			break;
+		n++;
+		if (strspn(p, "0123456789") == len &&
+		    (n != 2 || (len == 1 && *p == '2')))
+			ints++;
+		p += len;
 	}
-	if (allxy)
+	if (n == 2)
 		return XY;
-	return fourints ? POLY : BREP;
+	return n == 4 && ints == 4 ? POLY : BREP;
 }
 
 /* Drops consecutive repeats and the closing repeat of the first vertex. */
@@ -851,45 +840,57 @@ overlapsbox(const struct edge *e, const double *box)
 	    e->ymin <= box[3];
 }
 
+/* Tests the pairs of a small bucket, sorted by xmin so a sweep skips most. */
+static void
+testbucket(size_t *list, size_t n)
+{
+	size_t i, j;
+
+	for (i = 1; i < n; i++) {
+		size_t e = list[i];
+
+		for (j = i; j > 0 && edges[list[j - 1]].xmin > edges[e].xmin; j--)
+			list[j] = list[j - 1];
+		list[j] = e;
+	}
+	for (i = 0; i < n; i++) {
+		const struct edge *e = &edges[list[i]];
+
+		for (j = i + 1; j < n && edges[list[j]].xmin <= e->xmax; j++)
+			testpair(e, &edges[list[j]]);
+	}
+}
+
 static void
 crossings(size_t *list, size_t n, const double *box, int depth)
 {
-	size_t i, j, *sub, k, most = 0;
-	double child[4][4], mx, my;
+	size_t i, *sub, k;
+	double child[4], mx, my;
 	int q;
 
-	if (n <= 24 || depth >= 40) {
-		for (i = 0; i < n; i++)
-			for (j = i + 1; j < n; j++)
-				testpair(&edges[list[i]], &edges[list[j]]);
+	if (n <= 16 || depth >= 40) {
+		testbucket(list, n);
 		return;
 	}
 	mx = box[0] + (box[2] - box[0]) / 2;
 	my = box[1] + (box[3] - box[1]) / 2;
-	for (q = 0; q < 4; q++) {
-		child[q][0] = q & 1 ? mx : box[0];
-		child[q][2] = q & 1 ? box[2] : mx;
-		child[q][1] = q & 2 ? my : box[1];
-		child[q][3] = q & 2 ? box[3] : my;
-	}
 	sub = xreallocarray(NULL, n, sizeof(*sub));
 	for (q = 0; q < 4; q++) {
+		child[0] = q & 1 ? mx : box[0];
+		child[2] = q & 1 ? box[2] : mx;
+		child[1] = q & 2 ? my : box[1];
+		child[3] = q & 2 ? box[3] : my;
 		for (i = k = 0; i < n; i++)
-			if (overlapsbox(&edges[list[i]], child[q]))
+			if (overlapsbox(&edges[list[i]], child))
 				sub[k++] = list[i];
-		if (k > most)
-			most = k;
 		if (k == n) {
-			/* no edge left this quarter: splitting cannot help */
+			/* every edge reaches into this quarter: no progress */
+			testbucket(list, n);
 			break;
 		}
-		crossings(sub, k, child[q], depth + 1);
+		crossings(sub, k, child, depth + 1);
 	}
 	free(sub);
-	if (most == n)
-		for (i = 0; i < n; i++)
-			for (j = i + 1; j < n; j++)
-				testpair(&edges[list[i]], &edges[list[j]]);
 }
 
 static long *uf;
@@ -1250,7 +1251,9 @@ main(int argc, char *argv[])
 		enum format f;
 
 		readall(&s, argc > 0 ? argv[i] : "-");
-		f = format == AUTO ? detect(&s) : format;
+		f = detect(&s);
+		if (format != AUTO)
+			f = format;
 		s.p = s.buf;
 		s.line = 1;
 		switch (f) {
