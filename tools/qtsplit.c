@@ -89,53 +89,35 @@ progress(int force)
 }
 
 /*
- * Formatting reals is the costliest part of the output, so each level keeps
- * its cell size and the last coordinates written, one for even and one for
- * odd columns and rows: siblings share them.
+ * Formatting reals is the costliest part of the output.  A cell's text is
+ * kept while its subtree is written: the children in column 2ix share the
+ * parent's x (2ix * h/2 is ix * h exactly), those in row 2iy its y, so a
+ * split formats only the odd column's x and the odd row's y.
  */
-struct coordcache {
-	uint64_t	key[2][2];	/* [x or y][parity] */
-	char		text[2][2][32];
-	size_t		len[2][2];
-	char		size[32];
-	size_t		sizelen;
+struct text {
+	char	s[32];
+	size_t	len;
 };
 
-static struct coordcache cache[QT_MAXLEVEL + 1];
+static struct text sizetext[QT_MAXLEVEL + 1];
+static struct text oddx[QT_MAXLEVEL + 1], oddy[QT_MAXLEVEL + 1];
 
 static void
-initcache(void)
+settext(struct text *t, double v)
 {
-	int l, a, p;
-
-	for (l = 0; l <= QT_MAXLEVEL; l++) {
-		for (a = 0; a < 2; a++)
-			for (p = 0; p < 2; p++)
-				cache[l].key[a][p] = UINT64_MAX;
-		cache[l].sizelen = fmtreal(cache[l].size,
-		    ldexp(u.size, -l)) - cache[l].size;
-	}
+	t->len = fmtreal(t->s, v) - t->s;
 }
 
 static char *
-putcoord(char *p, int level, int axis, uint64_t i)
+puttext(char *p, const struct text *t)
 {
-	struct coordcache *c = &cache[level];
-	int par = i & 1;
-
-	if (c->key[axis][par] != i) {
-		double v = cellcoord(axis ? u.y0 : u.x0, u.size, level, i);
-
-		c->key[axis][par] = i;
-		c->len[axis][par] = fmtreal(c->text[axis][par], v) -
-		    c->text[axis][par];
-	}
-	memcpy(p, c->text[axis][par], c->len[axis][par]);
-	return p + c->len[axis][par];
+	memcpy(p, t->s, t->len);
+	return p + t->len;
 }
 
 static void
-emit(int level, uint64_t ix, uint64_t iy, char class)
+emit(int level, uint64_t ix, uint64_t iy, const struct text *x,
+    const struct text *y, char class)
 {
 	char line[256], *p = line;
 
@@ -154,12 +136,11 @@ emit(int level, uint64_t ix, uint64_t iy, char class)
 	*p++ = ' ';
 	p = fmtint(p, (long long)iy);
 	*p++ = ' ';
-	p = putcoord(p, level, 0, ix);
+	p = puttext(p, x);
 	*p++ = ' ';
-	p = putcoord(p, level, 1, iy);
+	p = puttext(p, y);
 	*p++ = ' ';
-	memcpy(p, cache[level].size, cache[level].sizelen);
-	p += cache[level].sizelen;
+	p = puttext(p, &sizetext[level]);
 	if (class) {
 		*p++ = ' ';
 		*p++ = class;
@@ -277,26 +258,30 @@ splits(int level, size_t n)
 
 /* Writes the cell and its subtree; its edges are lists[level][0..n-1]. */
 static void
-visit(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
+visit(int level, uint64_t ix, uint64_t iy, const struct text *x,
+    const struct text *y, size_t n, int inside)
 {
 	int parity[4], q;
 
 	if (!splits(level, n)) {
-		emit(level, ix, iy, n > 0 ? 'P' : inside ? 'F' : 'E');
+		emit(level, ix, iy, x, y, n > 0 ? 'P' : inside ? 'F' : 'E');
 		return;
 	}
-	emit(level, ix, iy, 0);
+	emit(level, ix, iy, x, y, 0);
 	if (n > 0)
 		children(level, ix, iy, n, inside, parity);
 	else
 		parity[0] = parity[1] = parity[2] = parity[3] = inside;
+	settext(&oddx[level + 1], cellcoord(u.x0, u.size, level + 1, 2 * ix + 1));
+	settext(&oddy[level + 1], cellcoord(u.y0, u.size, level + 1, 2 * iy + 1));
 	for (q = 0; q < 4; q++) {
 		size_t m = n > 0 ? childlist(level, n, q) : 0;
 
 		path[level] = '0' + q;
 		path[level + 1] = '\0';
-		visit(level + 1, 2 * ix + (q & 1), 2 * iy + (q >> 1), m,
-		    parity[q]);
+		visit(level + 1, 2 * ix + (q & 1), 2 * iy + (q >> 1),
+		    q & 1 ? &oddx[level + 1] : x, q & 2 ? &oddy[level + 1] : y,
+		    m, parity[q]);
 	}
 	path[level] = '\0';
 }
@@ -463,7 +448,8 @@ main(int argc, char *argv[])
 		    maxlevel);
 
 	started = lastreport = time(NULL);
-	initcache();
+	for (i = 0; i <= QT_MAXLEVEL; i++)
+		settext(&sizetext[i], ldexp(u.size, -i));
 	qt_header();
 	qt_universe(&u);
 	qt_level(maxlevel);
@@ -500,7 +486,9 @@ main(int argc, char *argv[])
 		path[depth] = '\0';
 		level = depth;
 	}
-	visit(level, ix, iy, n, inside);
+	settext(&oddx[level], cellcoord(u.x0, u.size, level, ix));
+	settext(&oddy[level], cellcoord(u.y0, u.size, level, iy));
+	visit(level, ix, iy, &oddx[level], &oddy[level], n, inside);
 	qt_end();
 	progress(1);
 	closeout();
