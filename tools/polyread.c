@@ -430,7 +430,6 @@ static void
 wktpolygon(struct src *s)
 {
 	size_t first = nrings;
-	long line = s->line;
 	int k = 0;
 
 	if (keyword(s, "EMPTY"))
@@ -453,7 +452,6 @@ wktpolygon(struct src *s)
 	punct(s, ')');
 	if (nrings > first)
 		npolys++;
-	(void)line;
 }
 
 static void
@@ -493,7 +491,7 @@ struct seg {
 static void
 parsepoly(struct src *s)
 {
-	long long nv, dim, nattr, nbm, nseg, nsbm, nholes, i, base = 0, j;
+	long long nv, nattr, nbm, nseg, nsbm, nholes, i, base = 0, j;
 	struct point *pt = NULL;
 	long *ptline = NULL, *deg, *adj, *used;
 	struct seg *seg = NULL;
@@ -503,10 +501,9 @@ parsepoly(struct src *s)
 	if (nv == 0)
 		errat(s->name, s->line, "vertices in a separate .node file are "
 		    "not supported");
-	dim = integer(s, "dimension", 2, 2);
+	integer(s, "dimension", 2, 2);
 	nattr = integer(s, "number of attributes", 0, 1000);
 	nbm = integer(s, "number of boundary markers", 0, 1);
-	(void)dim;
 	for (i = 0; i < nv; i++) {
 		long long id;
 
