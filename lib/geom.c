@@ -113,10 +113,35 @@ side_nudged(struct point a, struct point b, struct point c, struct point d)
 }
 
 /*
- * Even-odd containment of the point p + e(toward - p), e > 0 infinitesimal,
- * in the ring v[0..n-1]: a ray to +x, half-open in y.  The nudge gives a
- * definite answer when p lies on the ring, as long as the segment from p
- * toward `toward' does not run along a ring edge.
+ * Whether a ray from p + e(toward - p) to +x crosses the edge a-b, e > 0
+ * infinitesimal, counting an edge's lower end and not its upper end, so
+ * that a ray through a vertex counts it once or not at all.
+ */
+int
+ray_crosses(struct point a, struct point b, struct point p,
+    struct point toward)
+{
+	int aabove, babove;
+
+	aabove = a.y > p.y || (a.y == p.y && toward.y < p.y);
+	babove = b.y > p.y || (b.y == p.y && toward.y < p.y);
+	if (aabove == babove)
+		return 0;
+	if (aabove) {
+		struct point t = a;
+
+		a = b;
+		b = t;
+	}
+	/* a below, b above: the ray crosses when p is left of a->b */
+	return side_nudged(a, b, p, toward) > 0;
+}
+
+/*
+ * Even-odd containment of the point p + e(toward - p) in the ring
+ * v[0..n-1].  The nudge gives a definite answer when p lies on the ring,
+ * as long as the segment from p toward `toward' does not run along a ring
+ * edge.
  */
 int
 ring_contains(const struct point *v, size_t n, struct point p,
@@ -125,23 +150,7 @@ ring_contains(const struct point *v, size_t n, struct point p,
 	size_t i, j;
 	int inside = 0;
 
-	for (i = 0, j = n - 1; i < n; j = i++) {
-		struct point a = v[j], b = v[i];
-		int aabove, babove;
-
-		aabove = a.y > p.y || (a.y == p.y && toward.y < p.y);
-		babove = b.y > p.y || (b.y == p.y && toward.y < p.y);
-		if (aabove == babove)
-			continue;
-		if (aabove) {
-			struct point t = a;
-
-			a = b;
-			b = t;
-		}
-		/* a below, b above: the ray crosses when p is left of a->b */
-		if (side_nudged(a, b, p, toward) > 0)
-			inside = !inside;
-	}
+	for (i = 0, j = n - 1; i < n; j = i++)
+		inside ^= ray_crosses(v[j], v[i], p, toward);
 	return inside;
 }

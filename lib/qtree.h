@@ -44,6 +44,7 @@ struct point {
 };
 int	 orient2d(double, double, double, double, double, double);
 int	 side_nudged(struct point, struct point, struct point, struct point);
+int	 ray_crosses(struct point, struct point, struct point, struct point);
 int	 ring_contains(const struct point *, size_t, struct point,
 	    struct point);
 

@@ -283,3 +283,19 @@ ring 3 outer 4" ]
 		[ "$holes" -eq "$blank" ]
 	done
 }
+
+@test "many rings: roles by nesting against a large ring, and side by side" {
+	# a 1000-gon around a 10 x 10 grid of small squares, each holding a
+	# smaller square: 100 holes and 100 islands
+	awk 'BEGIN { pi = atan2(0, -1)
+	    for (k = 0; k < 1000; k++) printf "%.17g %.17g\n", 20 * cos(2 * pi * k / 1000), 20 * sin(2 * pi * k / 1000)
+	    for (i = 0; i < 10; i++) for (j = 0; j < 10; j++) {
+		x = 2.5 * i - 12; y = 2.5 * j - 12
+		printf "\n%g %g\n%g %g\n%g %g\n%g %g\n", x, y, x + 1, y, x + 1, y + 1, x, y + 1
+		printf "\n%g %g\n%g %g\n%g %g\n%g %g\n", x + .25, y + .25, x + .75, y + .25, x + .75, y + .75, x + .25, y + .75 } }' > grid.xy
+	run -0 bash -c 'polyread grid.xy | awk "\$1 == \"ring\" { n[\$3]++ } END { print n[\"outer\"], n[\"hole\"] }"'
+	[ "$output" = "101 100" ]
+	awk 'BEGIN { for (i = 0; i < 3000; i++) printf "%d 0\n%d 0\n%d 1\n\n", 3 * i, 3 * i + 1, 3 * i }' > row.xy
+	run -0 bash -c 'polyread row.xy | grep -c "^ring .* outer 3$"'
+	[ "$output" = 3000 ]
+}

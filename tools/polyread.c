@@ -837,19 +837,22 @@ overlapsbox(const struct edge *e, const double *box)
 	    e->ymin <= box[3];
 }
 
-/* Tests the pairs of a small bucket, sorted by xmin so a sweep skips most. */
+static int
+cmpxmin(const void *a, const void *b)
+{
+	double s = edges[*(const size_t *)a].xmin;
+	double t = edges[*(const size_t *)b].xmin;
+
+	return (s > t) - (s < t);
+}
+
+/* Tests the pairs of a bucket, sorted by xmin so that a sweep skips most. */
 static void
 testbucket(size_t *list, size_t n)
 {
 	size_t i, j;
 
-	for (i = 1; i < n; i++) {
-		size_t e = list[i];
-
-		for (j = i; j > 0 && edges[list[j - 1]].xmin > edges[e].xmin; j--)
-			list[j] = list[j - 1];
-		list[j] = e;
-	}
+	qsort(list, n, sizeof(*list), cmpxmin);
 	for (i = 0; i < n; i++) {
 		const struct edge *e = &edges[list[i]];
 
@@ -858,36 +861,39 @@ testbucket(size_t *list, size_t n)
 	}
 }
 
+/*
+ * Halves the box across its longer side until few edges remain, so that
+ * only the edges that straddle a cut are tested twice.  When every edge
+ * straddles the cut, cutting cannot help and the bucket is tested whole.
+ */
 static void
 crossings(size_t *list, size_t n, const double *box, int depth)
 {
-	size_t i, *sub, k;
-	double child[4], mx, my;
-	int q;
+	size_t i, *sub[2], k[2];
+	double half[2][4], mid;
+	int side, axis;
 
-	if (n <= 16 || depth >= 40) {
+	if (n <= 16 || depth >= 64) {
 		testbucket(list, n);
 		return;
 	}
-	mx = box[0] + (box[2] - box[0]) / 2;
-	my = box[1] + (box[3] - box[1]) / 2;
-	sub = xreallocarray(NULL, n, sizeof(*sub));
-	for (q = 0; q < 4; q++) {
-		child[0] = q & 1 ? mx : box[0];
-		child[2] = q & 1 ? box[2] : mx;
-		child[1] = q & 2 ? my : box[1];
-		child[3] = q & 2 ? box[3] : my;
-		for (i = k = 0; i < n; i++)
-			if (overlapsbox(&edges[list[i]], child))
-				sub[k++] = list[i];
-		if (k == n) {
-			/* every edge reaches into this quarter: no progress */
-			testbucket(list, n);
-			break;
-		}
-		crossings(sub, k, child, depth + 1);
+	axis = box[2] - box[0] >= box[3] - box[1] ? 0 : 1;
+	mid = box[axis] + (box[axis + 2] - box[axis]) / 2;
+	for (side = 0; side < 2; side++) {
+		memcpy(half[side], box, sizeof(half[side]));
+		half[side][side ? axis : axis + 2] = mid;
+		sub[side] = xreallocarray(NULL, n, sizeof(*sub[side]));
+		for (i = k[side] = 0; i < n; i++)
+			if (overlapsbox(&edges[list[i]], half[side]))
+				sub[side][k[side]++] = list[i];
 	}
-	free(sub);
+	if (k[0] == n && k[1] == n)
+		testbucket(list, n);
+	else
+		for (side = 0; side < 2; side++)
+			crossings(sub[side], k[side], half[side], depth + 1);
+	free(sub[0]);
+	free(sub[1]);
 }
 
 static long *uf;
@@ -981,35 +987,153 @@ connectivity(void)
 	free(link);
 }
 
-/* Depth: how many rings contain it.  Parent: the deepest of those. */
+/*
+ * Containment queries against a large ring look only at the edges in the
+ * horizontal strip of the query point: a ray at height y can only cross
+ * edges whose y range holds y, and those are all filed under y's strip.
+ */
+struct strips {
+	double	 ymin, height;
+	size_t	 k;
+	size_t	*start;		/* edges of strip j: edge[start[j]..start[j+1]) */
+	size_t	*edge;
+};
+
+static size_t
+stripof(const struct strips *st, double y)
+{
+	double f = (y - st->ymin) / st->height;
+
+	if (!(f > 0))
+		return 0;
+	return f >= (double)(st->k - 1) ? st->k - 1 : (size_t)f;
+}
+
+static void
+buildstrips(const struct inring *r, struct strips *st)
+{
+	size_t i, j, *fill;
+
+	st->k = r->n / 8;
+	st->ymin = r->ymin;
+	st->height = (r->ymax - r->ymin) / st->k;
+	st->start = xreallocarray(NULL, st->k + 1, sizeof(*st->start));
+	fill = xreallocarray(NULL, st->k + 1, sizeof(*fill));
+	memset(st->start, 0, (st->k + 1) * sizeof(*st->start));
+	for (i = 0; i < r->n; i++) {
+		struct point a = r->v[i], b = r->v[(i + 1) % r->n];
+		size_t lo = stripof(st, fmin(a.y, b.y)), hi = stripof(st,
+		    fmax(a.y, b.y));
+
+		for (j = lo; j <= hi; j++)
+			st->start[j + 1]++;
+	}
+	for (j = 0; j < st->k; j++)
+		st->start[j + 1] += st->start[j];
+	memcpy(fill, st->start, (st->k + 1) * sizeof(*fill));
+	st->edge = xreallocarray(NULL, st->start[st->k] + 1,
+	    sizeof(*st->edge));
+	for (i = 0; i < r->n; i++) {
+		struct point a = r->v[i], b = r->v[(i + 1) % r->n];
+		size_t lo = stripof(st, fmin(a.y, b.y)), hi = stripof(st,
+		    fmax(a.y, b.y));
+
+		for (j = lo; j <= hi; j++)
+			st->edge[fill[j]++] = i;
+	}
+	free(fill);
+}
+
+static struct strips *strips;
+
+static int
+contains(size_t ring, struct point p, struct point toward)
+{
+	const struct inring *r = &rings[ring];
+	struct strips *st = &strips[ring];
+	size_t j, s;
+	int inside = 0;
+
+	if (r->n < 64)
+		return ring_contains(r->v, r->n, p, toward);
+	if (st->k == 0)
+		buildstrips(r, st);
+	s = stripof(st, p.y);
+	for (j = st->start[s]; j < st->start[s + 1]; j++) {
+		size_t i = st->edge[j];
+
+		inside ^= ray_crosses(r->v[i], r->v[(i + 1) % r->n], p,
+		    toward);
+	}
+	return inside;
+}
+
+static int
+cmpring(const void *a, const void *b)
+{
+	const struct inring *r = &rings[*(const size_t *)a];
+	const struct inring *q = &rings[*(const size_t *)b];
+
+	return (r->xmin > q->xmin) - (r->xmin < q->xmin);
+}
+
+static int
+bboxinside(const struct inring *a, const struct inring *b)
+{
+	return b->xmin <= a->xmin && b->xmax >= a->xmax &&
+	    b->ymin <= a->ymin && b->ymax >= a->ymax;
+}
+
+/*
+ * Depth: how many rings contain it.  Parent: the deepest of those.  A sweep
+ * in x keeps the rings whose x range reaches the current one, so each ring
+ * is tested only against rings whose box could hold it.
+ */
 static void
 nesting(void)
 {
-	size_t i, j, n = 0, cap = 0;
+	size_t i, j, g, n = 0, cap = 0, nact = 0, *order, *active;
 	long (*pair)[2] = NULL;
 
+	order = xreallocarray(NULL, nrings + 1, sizeof(*order));
+	active = xreallocarray(NULL, nrings + 1, sizeof(*active));
+	strips = xreallocarray(NULL, nrings + 1, sizeof(*strips));
+	memset(strips, 0, (nrings + 1) * sizeof(*strips));
 	for (i = 0; i < nrings; i++) {
+		order[i] = i;
 		rings[i].depth = 0;
 		rings[i].parent = -1;
 	}
-	for (i = 0; i < nrings; i++) {
-		struct inring *a = &rings[i];
+	qsort(order, nrings, sizeof(*order), cmpring);
+	for (i = 0; i < nrings; i = g) {
+		double x = rings[order[i]].xmin;
+		size_t keep = 0;
 
-		for (j = 0; j < nrings; j++) {
-			struct inring *b = &rings[j];
+		/* rings that start together may hold one another */
+		for (g = i; g < nrings && rings[order[g]].xmin == x; g++)
+			active[nact++] = order[g];
+		for (j = 0; j < nact; j++)
+			if (rings[active[j]].xmax >= x)
+				active[keep++] = active[j];
+		nact = keep;
+		for (; i < g; i++) {
+			struct inring *a = &rings[order[i]];
 
-			if (j == i || b->xmin > a->xmin || b->xmax < a->xmax ||
-			    b->ymin > a->ymin || b->ymax < a->ymax)
-				continue;
-			if (!ring_contains(b->v, b->n, a->v[0], a->v[1]))
-				continue;
-			if (n == cap) {
-				cap = cap ? 2 * cap : 64;
-				pair = xreallocarray(pair, cap, sizeof(*pair));
+			for (j = 0; j < nact; j++) {
+				size_t b = active[j];
+
+				if (b == order[i] || !bboxinside(a, &rings[b]) ||
+				    !contains(b, a->v[0], a->v[1]))
+					continue;
+				if (n == cap) {
+					cap = cap ? 2 * cap : 64;
+					pair = xreallocarray(pair, cap,
+					    sizeof(*pair));
+				}
+				pair[n][0] = order[i];
+				pair[n++][1] = b;
+				a->depth++;
 			}
-			pair[n][0] = i;
-			pair[n++][1] = j;
-			a->depth++;
 		}
 	}
 	for (i = 0; i < n; i++) {
@@ -1019,7 +1143,15 @@ nesting(void)
 		    rings[pair[i][1]].depth > rings[a->parent].depth)
 			a->parent = pair[i][1];
 	}
+	for (i = 0; i < nrings; i++)
+		if (strips[i].k > 0) {
+			free(strips[i].start);
+			free(strips[i].edge);
+		}
+	free(strips);
 	free(pair);
+	free(order);
+	free(active);
 }
 
 /* Declared roles (wkt, brep) must agree with the nesting. */
