@@ -12,7 +12,7 @@ LDLIBS = -lm
 BIN = polyread qtsplit
 MAN1 = man/polyread.1 man/qtsplit.1
 MAN5 = man/qtree.5
-LIBOBJ = lib/util.o lib/geom.o lib/stream.o
+LIBOBJ = lib/util.o lib/geom.o lib/stream.o lib/fmtreal.o
 
 all: $(BIN)
 
@@ -33,13 +33,34 @@ qtsplit: tools/qtsplit.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o lib/libqtree.a $(LDLIBS)
 tools/polyread.o tools/qtsplit.o: lib/qtree.h
 
-test: all
+# Test programs: fmtcheck checks fmtreal against printf and strtod,
+# fmtbench times it.
+tests/fmtcheck: tests/fmtcheck.c lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtcheck.c lib/libqtree.a $(LDLIBS)
+tests/fmtbench: tests/fmtbench.c lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtbench.c lib/libqtree.a $(LDLIBS)
+
+test: all tests/fmtcheck
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	bats tests
 
 demo: all
 	./polyread samples/amoeba.brep | ./qtsplit -l 6 | awk \
 	    '$$1 == "leaf" { n[$$9]++; t++ } END { printf "amoeba, level 6: %d leaves: %d F, %d E, %d P\n", t, n["F"], n["E"], n["P"] }'
+
+# The whole suite again with the address and undefined-behaviour
+# sanitizers; the sanitized programs are removed afterwards.
+SANFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
+	-fno-omit-frame-pointer
+sanitize:
+	$(MAKE) clean
+	QTREE_SANITIZE=1 $(MAKE) CFLAGS="$(SANFLAGS) -Wall -Wextra" \
+	    LDFLAGS="$(SANFLAGS)" test
+	$(MAKE) clean
+
+# Each parser under AFL++ for FUZZTIME seconds (default 60).
+fuzz:
+	sh tests/fuzz/run.sh
 
 install: all
 	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(MANPREFIX)/man1 \
@@ -54,6 +75,7 @@ uninstall:
 	for f in $(MAN5); do rm -f $(DESTDIR)$(MANPREFIX)/man5/$${f#man/}; done
 
 clean:
-	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o
+	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
+	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit
 
-.PHONY: all test demo install uninstall clean
+.PHONY: all test demo sanitize fuzz install uninstall clean

@@ -33,10 +33,12 @@ char	*xstrdup(const char *);
 int	 parsereal(const char *, const char **, double *);
 int	 parselong(const char *, const char **, long long *);
 int	 coordok(double);
-char	*fmtreal(char *, double);
 char	*fmtint(char *, long long);
 FILE	*openin(const char *, const char **);
 void	 closeout(void);
+
+/* fmtreal.c: the shortest decimal that reads back; buf holds 32 bytes */
+char	*fmtreal(char *, double);
 
 /* geom.c: exact predicates */
 struct point {

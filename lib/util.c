@@ -2,6 +2,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,12 +12,18 @@
 
 const char *progname = "qtree";
 
+/*
+ * Every main calls this first.  A closed pipe must end a filter quietly, as
+ * it does by default; a shell or runner that ignores SIGPIPE would
+ * otherwise turn it into a write error message.
+ */
 void
 setprogname_(const char *argv0)
 {
 	const char *p = strrchr(argv0, '/');
 
 	progname = p ? p + 1 : argv0;
+	signal(SIGPIPE, SIG_DFL);
 }
 
 static void
@@ -179,30 +186,6 @@ coordok(double v)
 	double a = fabs(v);
 
 	return v == 0 || (a >= QT_COORD_MIN && a <= QT_COORD_MAX);
-}
-
-/*
- * Writes the shortest decimal that reads back as v, NUL-terminated, and
- * returns the end.  For finite v, %.17g always reads back; fewer digits are
- * tried first.
- */
-char *
-fmtreal(char *buf, double v)
-{
-	int prec;
-
-	if (v == 0) {
-		buf[0] = '0';
-		buf[1] = '\0';
-		return buf + 1;
-	}
-	for (prec = 15; prec < 17; prec++) {
-		int n = snprintf(buf, 32, "%.*g", prec, v);
-
-		if (strtod(buf, NULL) == v)
-			return buf + n;
-	}
-	return buf + snprintf(buf, 32, "%.17g", v);
 }
 
 char *

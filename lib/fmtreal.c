@@ -1,0 +1,454 @@
+/*
+ * fmtreal: the shortest decimal that reads back as a given double, in the
+ * layout of printf's %g.
+ *
+ * The method follows Raffaello Giulietti's Schubfach ("The Schubfach way to
+ * render doubles", 2020).  A double v = c 2^q reads back from every decimal
+ * inside its rounding interval, the points halfway to its neighbours
+ * (included when c is even, since strtod breaks ties to even).  With
+ * D = 10^k the largest power of ten not wider than that interval, the
+ * interval holds at most one multiple of 10D and at least one multiple of D,
+ * so two levels of candidates settle the shortest digits.  Each candidate
+ * is compared with v and the interval ends scaled by 4 / D; those three
+ * products are formed with a 128-bit overestimate of 10^-k and kept as
+ * floor plus a sticky bit (round to odd), which answers every comparison
+ * with an even integer exactly.  The product errs by less than 2^-68; a
+ * continued-fraction search over every exponent finds the true values at
+ * least 2^-65.4 away from an integer unless they are integers, which
+ * scale() recognizes, so its printf fallback (slowfmt) is never reached.
+ *
+ * The digits are printf's, not only "shortest": those of %.*g at the least
+ * precision p whose output reads back, so among p-digit decimals only the
+ * one nearest v may be taken.  Where the interval is symmetric the nearest
+ * is always inside when any is.  Above a power of two the interval reaches
+ * only a quarter step below v, and there the nearest is checked and one
+ * more digit taken when it falls outside.
+ *
+ * The layout is that of %g at precision max(p, 15), as the first of %.15g,
+ * %.16g, %.17g that reads back prints it (what fmtreal did before): 10
+ * prints as "10", not as %.1g's "1e+01".  For a normal double the digits
+ * of that %.15g are the shortest ones; a subnormal gets its shortest digits
+ * ("5e-324", where %.15g would add noise).
+ *
+ * The powers of ten are computed once, at the first call, with exact
+ * integer arithmetic (see initpow10).
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "qtree.h"
+
+/* The 10^e used: e = -k for every level k, and -k + 1 for one more digit. */
+#define E10MIN	(-292)
+#define E10MAX	325
+
+/*
+ * 10^e = g 2^(beta - 127) with 2^127 <= g < 2^128, where g is rounded up
+ * unless exact: a product with g is never below the true one.
+ */
+struct pow10 {
+	uint64_t	 hi, lo;
+	int		 beta;
+	int		 exact;
+};
+
+static struct pow10 pow10tab[E10MAX - E10MIN + 1];
+static uint64_t pow5[28];	/* 5^0 .. 5^27, all below 2^64 */
+static int ready;
+
+/* Bits of a little-endian array of 32-bit limbs; bits outside are zero. */
+static int
+bigbit(const uint32_t *x, int nlimb, long i)
+{
+	if (i < 0 || i >= 32L * nlimb)
+		return 0;
+	return x[i / 32] >> (i % 32) & 1;
+}
+
+static int
+bitlen(const uint32_t *x, int nlimb)
+{
+	uint32_t t;
+	int i = nlimb - 1, n = 0;
+
+	while (i > 0 && x[i] == 0)
+		i--;
+	for (t = x[i]; t != 0; t >>= 1)
+		n++;
+	return 32 * i + n;
+}
+
+/* Bits from..from+127 of x (from may be negative) into e. */
+static void
+bigtop(const uint32_t *x, int nlimb, long from, struct pow10 *e)
+{
+	long i;
+
+	e->hi = e->lo = 0;
+	for (i = 127; i >= 64; i--)
+		e->hi = e->hi << 1 | bigbit(x, nlimb, from + i);
+	for (; i >= 0; i--)
+		e->lo = e->lo << 1 | bigbit(x, nlimb, from + i);
+}
+
+static void
+roundup(struct pow10 *e)
+{
+	if (++e->lo == 0)
+		e->hi++;
+	/* 2^128 - 1 never occurs as a truncated power of ten here. */
+	if (e->hi == 0)
+		abort();
+}
+
+/*
+ * 10^n = 5^n 2^n takes the top 128 bits of 5^n; 10^-n = 2^-n / 5^n takes
+ * those of floor(2^B / 5^n), got by dividing 2^B by 5 n times (each floor
+ * of a floor is the floor of the quotient), B leaving 128 bits to spare
+ * past 5^-(-E10MIN).
+ */
+#define BIGLIMBS	26	/* 832 bits: above 5^325 and 2^(128 + 679) */
+
+static void
+initpow10(void)
+{
+	uint32_t p5[BIGLIMBS], inv[BIGLIMBS];
+	const long B = 32L * BIGLIMBS - 1;
+	uint64_t t;
+	int n, i, len;
+
+	memset(p5, 0, sizeof(p5));
+	memset(inv, 0, sizeof(inv));
+	p5[0] = 1;
+	inv[BIGLIMBS - 1] = (uint32_t)1 << 31;	/* 2^B */
+	for (n = 0; n <= E10MAX; n++) {
+		struct pow10 *e;
+
+		len = bitlen(p5, BIGLIMBS);
+		if (n < 28)
+			pow5[n] = (uint64_t)p5[1] << 32 | p5[0];
+		e = &pow10tab[n - E10MIN];
+		e->beta = n + len - 1;
+		bigtop(p5, BIGLIMBS, len - 128, e);
+		e->exact = len <= 128;	/* 5^n is odd: a bit is lost past 128 */
+		if (!e->exact)
+			roundup(e);
+		if (n >= 1 && -n >= E10MIN) {
+			e = &pow10tab[-n - E10MIN];
+			e->beta = -n - len;
+			e->exact = 0;
+			bigtop(inv, BIGLIMBS, B - 127 - len, e);
+			roundup(e);
+		}
+		for (t = 0, i = 0; i < BIGLIMBS; i++) {
+			t += (uint64_t)p5[i] * 5;
+			p5[i] = (uint32_t)t;
+			t >>= 32;
+		}
+		for (t = 0, i = BIGLIMBS - 1; i >= 0; i--) {
+			t = t << 32 | inv[i];
+			inv[i] = (uint32_t)(t / 5);
+			t %= 5;
+		}
+	}
+	ready = 1;
+}
+
+/* The 128-bit product of two 64-bit numbers. */
+static void
+mul64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
+{
+#ifdef __SIZEOF_INT128__
+	__extension__ unsigned __int128 p = (unsigned __int128)a * b;
+
+	*hi = (uint64_t)(p >> 64);
+	*lo = (uint64_t)p;
+#else
+	uint64_t a1 = a >> 32, a0 = a & 0xffffffff;
+	uint64_t b1 = b >> 32, b0 = b & 0xffffffff;
+	uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+	uint64_t mid = (p00 >> 32) + (p01 & 0xffffffff) + (p10 & 0xffffffff);
+
+	*hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+	*lo = mid << 32 | (p00 & 0xffffffff);
+#endif
+}
+
+/*
+ * x 2^q 10^e rounded to odd: the floor, its lowest bit set when inexact.
+ * With cp = x 2^h (h is 1 to 4 and x < 2^56 at level k; h is up to 8 and
+ * x = 2^54 for the digit more: cp < 2^63), the value is cp g / 2^128,
+ * where g overestimates by less than 1: the product overshoots by less
+ * than cp / 2^128, and a fraction of at least cp proves the floor and the
+ * inexactness.  A smaller fraction with an inexact g leaves the floor in
+ * doubt; the value is then an integer (5^-e divides x) or *doubt is set.
+ */
+static inline uint64_t
+scale(uint64_t x, int q, int e, int *doubt)
+{
+	const struct pow10 *p = &pow10tab[e - E10MIN];
+	uint64_t cp = x << (q + p->beta + 1), a1, a0, b1, b0, mid, top;
+
+	mul64(cp, p->lo, &a1, &a0);
+	mul64(cp, p->hi, &b1, &b0);
+	mid = b0 + a1;
+	top = b1 + (mid < a1);
+	if (p->exact)
+		return top | ((mid | a0) != 0);
+	if (mid != 0 || a0 >= cp)
+		return top | 1;
+	if (e < 0 && -e < 28 && x % pow5[-e] == 0)
+		return top;
+	*doubt = 1;
+	return top;
+}
+
+/* floor(q log10 2) and floor(log10(3/4 2^q)) for |q| <= 1100. */
+static int
+flog10pow2(int q)
+{
+	return (int)(((long)q * 78913 + (512L << 18)) >> 18) - 512;
+}
+
+static int
+flog10threequarterspow2(int q)
+{
+	return (int)(((long)q * 157827 - 65504 + (512L << 19)) >> 19) - 512;
+}
+
+/* Divides m by p = 10^z when it divides, adding z to *k, without a branch. */
+static inline void
+strip(uint64_t *m, int *k, uint64_t p, int z)
+{
+	uint64_t t = *m / p;
+	int divides = t * p == *m;
+	uint64_t mask = -(uint64_t)divides;
+
+	*m = (t & mask) | (*m & ~mask);
+	*k += z & -divides;
+}
+
+/*
+ * Strips m's trailing zeros, adding them to *k.  There are at most 15:
+ * m is at most one more than a tenth of v / D < 10 2^53.
+ */
+static uint64_t
+trimzeros(uint64_t m, int *k)
+{
+	strip(&m, k, 100000000, 8);
+	strip(&m, k, 10000, 4);
+	strip(&m, k, 100, 2);
+	strip(&m, k, 10, 1);
+	return m;
+}
+
+/*
+ * The digits m, without trailing zeros, and the exponent k (returned) of
+ * the decimal m 10^k printed for c 2^q (c > 0).  Sets *doubt when the
+ * arithmetic could not decide.
+ */
+static int
+shortest(uint64_t c, int q, int asym, uint64_t *mp, int *doubt)
+{
+	uint64_t cb = c << 2, cbl = cb - 2 + asym, cbr = cb + 2;
+	uint64_t vb, vbl, vbr, s, sp, r;
+	int out = c & 1, k, e;
+
+	k = asym ? flog10threequarterspow2(q) : flog10pow2(q);
+	e = -k;
+	vb = scale(cb, q, e, doubt);
+	vbl = scale(cbl, q, e, doubt);
+
+	/* One digit shorter: sp and sp + 1 times 10D, around v. */
+	s = vb >> 2;
+	sp = s / 10;
+	k++;
+	if (vbl + out <= sp * 40) {
+		*mp = trimzeros(sp, &k);
+		return k;
+	}
+	vbr = scale(cbr, q, e, doubt);
+	if ((sp + 1) * 40 + out <= vbr) {
+		/*
+		 * Below a power of two the lower neighbour may be nearer yet
+		 * outside; it wins the rounding at 10D unless sp + 1 also ends
+		 * in a zero, which gives its own rounding room.
+		 */
+		if (!asym || (sp + 1) % 10 == 0 || vb > sp * 40 + 20 ||
+		    (vb == sp * 40 + 20 && (sp + 1) % 2 == 0)) {
+			*mp = trimzeros(sp + 1, &k);
+			return k;
+		}
+	}
+	k--;
+
+	/*
+	 * Level D: the nearest of s and s + 1, ties to even.  Neither ends in
+	 * a zero, or it would have been found at 10D.
+	 */
+	r = vb > (s << 2) + 2 || (vb == (s << 2) + 2 && (s & 1)) ? s + 1 : s;
+	if (!asym || (r == s ? vbl <= s << 2 : (r << 2) <= vbr)) {
+		*mp = r;
+		return k;
+	}
+
+	/*
+	 * Only above a power of two: the nearest at D/10 is always inside,
+	 * and does not end in a zero, or it would be the nearest at D.
+	 */
+	vb = scale(cb, q, e + 1, doubt);
+	s = vb >> 2;
+	*mp = vb > (s << 2) + 2 || (vb == (s << 2) + 2 && (s & 1)) ? s + 1 : s;
+	return k - 1;
+}
+
+/*
+ * What shortest() cannot settle, if ever, printf settles: the least
+ * precision that reads back, printed at 15 digits or more when v is normal.
+ */
+static char *
+slowfmt(char *buf, double v, int normal)
+{
+	int p;
+
+	for (p = 1; p < 17; p++) {
+		snprintf(buf, 32, "%.*g", p, v);
+		if (strtod(buf, NULL) == v)
+			break;
+	}
+	if (normal && p < 15)
+		p = 15;
+	return buf + snprintf(buf, 32, "%.*g", p, v);
+}
+
+static const char pairs[200] =
+    "00010203040506070809"
+    "10111213141516171819"
+    "20212223242526272829"
+    "30313233343536373839"
+    "40414243444546474849"
+    "50515253545556575859"
+    "60616263646566676869"
+    "70717273747576777879"
+    "80818283848586878889"
+    "90919293949596979899";
+
+/* The eight digits of v < 10^8, leading zeros included. */
+static inline void
+put8(char *p, uint32_t v)
+{
+	uint32_t hi = v / 10000, lo = v % 10000;
+
+	memcpy(p, pairs + 2 * (hi / 100), 2);
+	memcpy(p + 2, pairs + 2 * (hi % 100), 2);
+	memcpy(p + 4, pairs + 2 * (lo / 100), 2);
+	memcpy(p + 6, pairs + 2 * (lo % 100), 2);
+}
+
+/* The number of digits of m, 1 <= m < 10^17, by comparisons, no branch. */
+static int
+ndigits(uint64_t m)
+{
+	return 1 + (m >= 10) + (m >= 100) + (m >= 1000) + (m >= 10000) +
+	    (m >= 100000) + (m >= 1000000) + (m >= 10000000) +
+	    (m >= 100000000) + (m >= 1000000000) + (m >= 10000000000) +
+	    (m >= 100000000000) + (m >= 1000000000000) +
+	    (m >= 10000000000000) + (m >= 100000000000000) +
+	    (m >= 1000000000000000) + (m >= 10000000000000000);
+}
+
+/*
+ * Writes -m 10^k (neg) or m 10^k as %.Pg prints it, where m < 10^17 has
+ * no trailing zero and P = max(15, number of digits of m).  The text is
+ * put together in out with copies of fixed size, a few moves where copies
+ * of the exact size would call memcpy; the bytes copied past the digits
+ * are never shown.  The longest result, "-d.16digitse-308", takes 25 of
+ * buf's 32 bytes.
+ */
+static char *
+layout(char *buf, int neg, uint64_t m, int k)
+{
+	char digs[40], out[64], *d, *p = out;
+	int n, x;
+
+	/* All 17 places, then the n that count: no loop on the length. */
+	n = ndigits(m);
+	digs[0] = '0' + (char)(m / 10000000000000000);
+	m %= 10000000000000000;
+	put8(digs + 1, (uint32_t)(m / 100000000));
+	put8(digs + 9, (uint32_t)(m % 100000000));
+	d = digs + 17 - n;
+	x = k + n - 1;		/* the exponent %e would show */
+	*p = '-';
+	p += neg;
+	if (x < -4 || x >= (n > 15 ? n : 15)) {
+		p[0] = d[0];
+		p[1] = '.';
+		memcpy(p + 2, d + 1, 16);
+		p += n > 1 ? n + 1 : 1;
+		*p++ = 'e';
+		*p++ = x < 0 ? '-' : '+';
+		if (x < 0)
+			x = -x;
+		if (x >= 100) {
+			*p++ = '0' + x / 100;
+			x %= 100;
+		}
+		memcpy(p, pairs + 2 * x, 2);
+		p += 2;
+	} else if (x < 0) {
+		memcpy(p, "0.0000", 6);		/* "0." and -x - 1 zeros */
+		p += 1 - x;
+		memcpy(p, d, 17);
+		p += n;
+	} else if (x + 1 >= n) {
+		memcpy(p, d, 17);
+		memset(p + n, '0', 16);
+		p += x + 1;
+	} else {
+		memcpy(p, d, 17);
+		p[x + 1] = '.';
+		memcpy(p + x + 2, d + x + 1, 16);
+		p += n + 1;
+	}
+	*p = '\0';
+	memcpy(buf, out, (size_t)(p - out) + 1);
+	return buf + (p - out);
+}
+
+/*
+ * Writes the shortest decimal that reads back as v (finite), laid out as %g
+ * does (see the top of this file); "0" for either zero.  Returns the
+ * terminating NUL.  buf must hold 32 bytes; nothing past the NUL is
+ * written.
+ */
+char *
+fmtreal(char *buf, double v)
+{
+	uint64_t bits, frac, c, m;
+	int bexp, q, k, doubt = 0;
+
+	memcpy(&bits, &v, sizeof(bits));
+	if ((bits & ~((uint64_t)1 << 63)) == 0) {
+		buf[0] = '0';
+		buf[1] = '\0';
+		return buf + 1;
+	}
+	if (!ready)
+		initpow10();
+	frac = bits & (((uint64_t)1 << 52) - 1);
+	bexp = (int)(bits >> 52 & 0x7ff);
+	if (bexp == 0) {
+		c = frac;
+		q = -1074;
+	} else {
+		c = frac | (uint64_t)1 << 52;
+		q = bexp - 1075;
+	}
+	k = shortest(c, q, frac == 0 && bexp > 1, &m, &doubt);
+	if (doubt)
+		return slowfmt(buf, v, bexp != 0);
+	return layout(buf, (int)(bits >> 63), m, k);
+}

@@ -1,0 +1,55 @@
+#!/bin/sh
+# Fuzzes every parser: polyread in each of its formats and the qtree(5)
+# reader (through qtsplit), each built with AFL++ instrumentation and the
+# address and undefined-behaviour sanitizers, for FUZZTIME seconds (default
+# 60) from the seed corpus in tests/fuzz/seeds.  Prints executions, crashes
+# and hangs per target, and fails when anything crashed or hung; the inputs
+# that did are left in tests/fuzz/out/TARGET/default/{crashes,hangs}.
+set -eu
+cd "$(dirname "$0")/../.."
+time=${FUZZTIME:-60}
+out=tests/fuzz/out
+
+if ! command -v afl-clang-fast > /dev/null 2>&1; then
+	echo "fuzz: afl-clang-fast not found (Debian package afl++)" >&2
+	exit 1
+fi
+
+build() {
+	AFL_QUIET=1 AFL_USE_ASAN=1 AFL_USE_UBSAN=1 afl-clang-fast -O1 -g \
+	    -std=c99 -D_POSIX_C_SOURCE=200809L -ffp-contract=off -Ilib \
+	    -o "tests/fuzz/$1" "tools/$1.c" lib/*.c -lm
+}
+build polyread
+build qtsplit
+
+# Containers have no CPU governor to check, may refuse CPU binding, and
+# may pipe core dumps elsewhere: none of that matters to a short run.
+AFL_SKIP_CPUFREQ=1 AFL_NO_AFFINITY=1 AFL_NO_UI=1 AFL_QUIET=1
+AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES=1 AFL_SKIP_CRASHES=1
+export AFL_SKIP_CPUFREQ AFL_NO_AFFINITY AFL_NO_UI AFL_QUIET
+export AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES AFL_SKIP_CRASHES
+
+mkdir -p "$out"
+bad=0
+for target in brep xy wkt poly qtree; do
+	case $target in
+	qtree)	set -- tests/fuzz/qtsplit -l 3 @@ ;;
+	*)	set -- tests/fuzz/polyread -f "$target" @@ ;;
+	esac
+	rm -rf "${out:?}/$target"
+	afl-fuzz -V "$time" -m none -t 2000 -i "tests/fuzz/seeds/$target" \
+	    -o "$out/$target" -- "$@" > "$out/$target.log" 2>&1 || {
+		echo "fuzz: afl-fuzz failed on $target; see $out/$target.log" >&2
+		tail -n 5 "$out/$target.log" >&2
+		exit 1
+	}
+	dir=$out/$target/default
+	execs=$(awk '$1 == "execs_done" { print $3 }' "$dir/fuzzer_stats")
+	crashes=$(find "$dir/crashes" -type f -name 'id:*' | wc -l)
+	hangs=$(find "$dir/hangs" -type f -name 'id:*' | wc -l)
+	printf 'fuzz %-5s %9s executions %3d crashes %3d hangs\n' \
+	    "$target" "$execs" "$crashes" "$hangs"
+	[ "$crashes" -eq 0 ] && [ "$hangs" -eq 0 ] || bad=1
+done
+exit "$bad"

@@ -1,0 +1,125 @@
+#!/usr/bin/env bats
+# Hostile input, faults and large data: a clear message and exit 1, never a
+# crash, a hang, or output that looks whole but is not.
+
+load test_helper
+
+# The filters that read qtree(5) streams and exist in this build.
+qtree_readers() {
+	for p in qtsplit qtleaves qtstats qt2svg; do
+		[ -x "$TOP/$p" ] && echo "$p"
+	done
+}
+
+# Runs one case of tests/bad/EXPECT through one program.
+bad_case() {
+	local prog=$1 name=$2 line=$3 msg=$4 prefix
+	prefix="$prog: tests/bad/$name:$line: "
+	[ "$line" = 0 ] && prefix="$prog: tests/bad/$name: "
+	run --separate-stderr timeout 20 "$prog" "tests/bad/$name"
+	if [ "$status" -ne 1 ] || [ "${#stderr_lines[@]}" -ne 1 ] ||
+	    [[ "$stderr" != "$prefix"*"$msg"* ]] ||
+	    printf '%s\n' "$output" | grep -q '^end '; then
+		echo "$prog $name: status $status, stderr: $stderr"
+		return 1
+	fi
+}
+
+@test "every case of tests/bad fails cleanly with file, line and message" {
+	cd "$TOP"
+	n=0
+	while IFS='|' read -r name prog line msg; do
+		case $name in '#'*|'') continue ;; esac
+		[ -f "tests/bad/$name" ]
+		if [ "$prog" = qtree ]; then
+			for p in $(qtree_readers); do
+				bad_case "$p" "$name" "$line" "$msg"
+			done
+		else
+			bad_case "$prog" "$name" "$line" "$msg"
+		fi
+		n=$((n + 1))
+	done < tests/bad/EXPECT
+	[ "$n" -ge 50 ]
+	# and every file there has its line in EXPECT
+	for f in tests/bad/*; do
+		case $f in */EXPECT) continue ;; esac
+		grep -q "^${f#tests/bad/}|" tests/bad/EXPECT
+	done
+}
+
+@test "-0 reads as 0" {
+	printf '0 0\n1 -0\n0 1\n' > z.xy
+	run -0 polyread z.xy
+	[ "${lines[4]}" = "v 1 0" ]
+}
+
+@test "a 10 MB number is refused without fuss, a 10 MB unknown record kept" {
+	{ printf '0 0\n1 '; head -c 10000000 /dev/zero | tr '\0' 7; printf '\n0 1\n'; } > long.xy
+	run -1 --separate-stderr polyread long.xy
+	[[ "$stderr" == "polyread: long.xy:2: number out of range: 777"* ]]
+	[ "${#stderr}" -lt 200 ]
+	{ printf 'qtree 1\nuniverse 0 0 1\nnote '; head -c 10000000 /dev/zero | tr '\0' x; printf '\nend 2\n'; } > long.qt
+	run -0 bash -c 'qtsplit -l 1 long.qt | awk "\$1 == \"note\" { print length(\$2) }"'
+	[ "$output" = 10000000 ]
+}
+
+@test "output to a full disk is an error with a message" {
+	for cmd in "polyread $SAMPLES/amoeba.brep" "qtsplit -l 8 a.qt"; do
+		polyread "$SAMPLES/amoeba.brep" > a.qt
+		run -1 --separate-stderr bash -c "$cmd > /dev/full"
+		[[ "$stderr" == *": write error: No space left on device" ]]
+	done
+}
+
+@test "a closed pipe ends quietly, even when SIGPIPE was ignored" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	run -0 --separate-stderr bash -c 'qtsplit -l 14 a.qt | head -n 1'
+	[ "$output" = "qtree 1" ]
+	[ -z "$stderr" ]
+	run -0 --separate-stderr bash -c 'trap "" PIPE; qtsplit -l 14 a.qt | head -n 1'
+	[ "$output" = "qtree 1" ]
+	[ -z "$stderr" ]
+}
+
+@test "read errors are reported" {
+	run -1 --separate-stderr polyread /
+	[ "$stderr" = "polyread: /: read error: Is a directory" ]
+	run -1 --separate-stderr qtsplit /
+	[ "$stderr" = "qtsplit: /: read error: Is a directory" ]
+	run -1 --separate-stderr qtsplit no/such/file
+	[ "$stderr" = "qtsplit: no/such/file: No such file or directory" ]
+}
+
+@test "a German locale changes neither parsing nor output" {
+	command -v localedef > /dev/null || skip "no localedef"
+	mkdir loc
+	localedef -i de_DE -c -f UTF-8 loc/de_DE.UTF-8 2> /dev/null ||
+	    [ -d loc/de_DE.UTF-8 ] || skip "cannot build de_DE.UTF-8 (package locales)"
+	# the locale is really in force: its decimal separator is a comma
+	run -0 env LOCPATH="$PWD/loc" LC_ALL=de_DE.UTF-8 bash -c 'printf "%.1f" 1,5'
+	[ "$output" = "1,5" ]
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 7 > c.qt
+	LOCPATH="$PWD/loc" LC_ALL=de_DE.UTF-8 bash -c \
+	    'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 7' > de.qt
+	cmp c.qt de.qt
+	grep -q '^universe 4 4 12.2$' de.qt
+}
+
+@test "a sample pipeline is clean under valgrind" {
+	command -v valgrind > /dev/null || skip "valgrind is not installed"
+	[ -z "${QTREE_SANITIZE:-}" ] || skip "the programs are built with sanitizers"
+	valgrind -q --error-exitcode=9 --leak-check=no polyread "$SAMPLES/amoeba.brep" > a.qt
+	valgrind -q --error-exitcode=9 --leak-check=no qtsplit -l 8 a.qt > t.qt
+	tail -n 1 t.qt | grep -q '^end '
+	run -1 valgrind -q --error-exitcode=9 polyread "$TOP/tests/bad/cross.xy"
+}
+
+@test "a 10^6-vertex polygon reads, checks and decomposes" {
+	awk 'BEGIN { n = 1000000; pi = atan2(0, -1)
+	    for (k = 0; k < n; k++) printf "%.17g %.17g\n", cos(2 * pi * k / n), sin(2 * pi * k / n) }' > circle.xy
+	run -0 timeout 120 polyread -l 10 circle.xy
+	[ "${lines[3]}" = "ring 1 outer 1000000" ]
+	printf '%s\n' "${lines[@]}" | timeout 120 qtsplit > c.qt
+	tail -n 1 c.qt | grep -q '^end '
+}
