@@ -453,10 +453,16 @@ main(int argc, char *argv[])
 	qt_header();
 	qt_universe(&u);
 	qt_level(maxlevel);
-	for (n = 0; n < nrings; n++)
+	for (n = 0; n < nrings; n++) {
 		qt_ring(&rings[n]);
-	for (n = 0; n < nkept; n++)
+		free(rings[n].v);
+	}
+	free(rings);
+	for (n = 0; n < nkept; n++) {
 		qt_raw(kept[n], strlen(kept[n]));
+		free(kept[n]);
+	}
+	free(kept);
 
 	inside = rootparity();
 	n = rootlist();
