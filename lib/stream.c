@@ -498,11 +498,23 @@ qt_cell(const struct cell *c)
 	written++;
 }
 
-/* A cell record its writer formatted itself, newline included. */
-void
-qt_cell_line(const char *line, size_t n)
+/*
+ * A record formatted in place: qt_record returns room for n bytes in the
+ * output buffer, qt_recorded takes the end of what was written there,
+ * newline included, and counts the record.
+ */
+char *
+qt_record(size_t n)
 {
-	qt_put(line, n);
+	if (outlen + n > sizeof(outbuf))
+		flushout();
+	return outbuf + outlen;
+}
+
+void
+qt_recorded(const char *end)
+{
+	outlen = end - outbuf;
 	written++;
 }
 

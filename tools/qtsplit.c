@@ -89,18 +89,25 @@ progress(int force)
 }
 
 /*
- * Formatting reals is the costliest part of the output.  A cell's text is
- * kept while its subtree is written: the children in column 2ix share the
- * parent's x (2ix * h/2 is ix * h exactly), those in row 2iy its y, so a
- * split formats only the odd column's x and the odd row's y.
+ * Formatting numbers is the costliest part of the output.  A cell's texts
+ * are kept while its subtree is written: the children in column 2ix share
+ * the parent's x (2ix * h/2 is ix * h exactly), those in row 2iy its y,
+ * so a split formats only the odd column's x and the odd row's y.  Column
+ * 2ix + 1 is column 2ix with its last digit, which is even, plus one.
  */
 struct text {
 	char	s[32];
 	size_t	len;
 };
 
-static struct text sizetext[QT_MAXLEVEL + 1];
-static struct text oddx[QT_MAXLEVEL + 1], oddy[QT_MAXLEVEL + 1];
+struct childtext {
+	struct text	num[2];	/* 2i and 2i + 1 */
+	struct text	odd;	/* the coordinate of 2i + 1 */
+};
+
+static struct text leveltext[QT_MAXLEVEL + 1], sizetext[QT_MAXLEVEL + 1];
+static struct childtext childx[QT_MAXLEVEL + 1], childy[QT_MAXLEVEL + 1];
+static double step[QT_MAXLEVEL + 1];	/* the cell size at each level */
 
 static void
 settext(struct text *t, double v)
@@ -108,18 +115,36 @@ settext(struct text *t, double v)
 	t->len = fmtreal(t->s, v) - t->s;
 }
 
+static void
+setnum(struct text *t, uint64_t v)
+{
+	t->len = fmtint(t->s, (long long)v) - t->s;
+}
+
+/* Copies all of the text's buffer, a fixed size that compiles to a few
+ * moves; the bytes past its length are overwritten by what follows. */
 static char *
 puttext(char *p, const struct text *t)
 {
-	memcpy(p, t->s, t->len);
+	memcpy(p, t->s, sizeof(t->s));
 	return p + t->len;
 }
 
+/* Texts of the children's columns (or rows) 2i and 2i + 1 at level. */
 static void
-emit(int level, uint64_t ix, uint64_t iy, const struct text *x,
-    const struct text *y, char class)
+setchildren(struct childtext *c, double origin, int level, uint64_t i)
 {
-	char line[256], *p = line;
+	setnum(&c->num[0], 2 * i);
+	c->num[1] = c->num[0];
+	c->num[1].s[c->num[1].len - 1]++;
+	settext(&c->odd, origin + (double)(2 * i + 1) * step[level]);
+}
+
+static void
+emit(int level, const struct text *ix, const struct text *iy,
+    const struct text *x, const struct text *y, char class)
+{
+	char *p = qt_record(512);
 
 	memcpy(p, class ? "leaf " : "node ", 5);
 	p += 5;
@@ -130,11 +155,11 @@ emit(int level, uint64_t ix, uint64_t iy, const struct text *x,
 		p += level;
 	}
 	*p++ = ' ';
-	p = fmtint(p, level);
+	p = puttext(p, &leveltext[level]);
 	*p++ = ' ';
-	p = fmtint(p, (long long)ix);
+	p = puttext(p, ix);
 	*p++ = ' ';
-	p = fmtint(p, (long long)iy);
+	p = puttext(p, iy);
 	*p++ = ' ';
 	p = puttext(p, x);
 	*p++ = ' ';
@@ -146,7 +171,7 @@ emit(int level, uint64_t ix, uint64_t iy, const struct text *x,
 		*p++ = class;
 	}
 	*p++ = '\n';
-	qt_cell_line(line, p - line);
+	qt_recorded(p);
 	if (level > deepest)
 		deepest = level;
 	if ((++ncells & 0xfffff) == 0)
@@ -169,8 +194,8 @@ children(int level, uint64_t ix, uint64_t iy, size_t n, int inside,
 	size_t k;
 
 	for (k = 0; k < 3; k++) {
-		gx[k] = cellcoord(u.x0, u.size, level + 1, 2 * ix + k);
-		gy[k] = cellcoord(u.y0, u.size, level + 1, 2 * iy + k);
+		gx[k] = u.x0 + (double)(2 * ix + k) * step[level + 1];
+		gy[k] = u.y0 + (double)(2 * iy + k) * step[level + 1];
 	}
 	for (k = 0; k < n; k++) {
 		const struct edge *e = &edges[list[k]];
@@ -258,30 +283,33 @@ splits(int level, size_t n)
 
 /* Writes the cell and its subtree; its edges are lists[level][0..n-1]. */
 static void
-visit(int level, uint64_t ix, uint64_t iy, const struct text *x,
-    const struct text *y, size_t n, int inside)
+visit(int level, uint64_t ix, uint64_t iy, const struct text *tix,
+    const struct text *tiy, const struct text *x, const struct text *y,
+    size_t n, int inside)
 {
+	struct childtext *cx = &childx[level + 1], *cy = &childy[level + 1];
 	int parity[4], q;
 
 	if (!splits(level, n)) {
-		emit(level, ix, iy, x, y, n > 0 ? 'P' : inside ? 'F' : 'E');
+		emit(level, tix, tiy, x, y, n > 0 ? 'P' : inside ? 'F' : 'E');
 		return;
 	}
-	emit(level, ix, iy, x, y, 0);
+	emit(level, tix, tiy, x, y, 0);
 	if (n > 0)
 		children(level, ix, iy, n, inside, parity);
 	else
 		parity[0] = parity[1] = parity[2] = parity[3] = inside;
-	settext(&oddx[level + 1], cellcoord(u.x0, u.size, level + 1, 2 * ix + 1));
-	settext(&oddy[level + 1], cellcoord(u.y0, u.size, level + 1, 2 * iy + 1));
+	setchildren(cx, u.x0, level + 1, ix);
+	setchildren(cy, u.y0, level + 1, iy);
 	for (q = 0; q < 4; q++) {
 		size_t m = n > 0 ? childlist(level, n, q) : 0;
+		int i = q & 1, j = q >> 1;
 
 		path[level] = '0' + q;
 		path[level + 1] = '\0';
-		visit(level + 1, 2 * ix + (q & 1), 2 * iy + (q >> 1),
-		    q & 1 ? &oddx[level + 1] : x, q & 2 ? &oddy[level + 1] : y,
-		    m, parity[q]);
+		visit(level + 1, 2 * ix + i, 2 * iy + j, &cx->num[i],
+		    &cy->num[j], i ? &cx->odd : x, j ? &cy->odd : y, m,
+		    parity[q]);
 	}
 	path[level] = '\0';
 }
@@ -448,8 +476,11 @@ main(int argc, char *argv[])
 		    maxlevel);
 
 	started = lastreport = time(NULL);
-	for (i = 0; i <= QT_MAXLEVEL; i++)
-		settext(&sizetext[i], ldexp(u.size, -i));
+	for (i = 0; i <= QT_MAXLEVEL; i++) {
+		step[i] = ldexp(u.size, -i);
+		settext(&sizetext[i], step[i]);
+		setnum(&leveltext[i], i);
+	}
 	qt_header();
 	qt_universe(&u);
 	qt_level(maxlevel);
@@ -492,9 +523,15 @@ main(int argc, char *argv[])
 		path[depth] = '\0';
 		level = depth;
 	}
-	settext(&oddx[level], cellcoord(u.x0, u.size, level, ix));
-	settext(&oddy[level], cellcoord(u.y0, u.size, level, iy));
-	visit(level, ix, iy, &oddx[level], &oddy[level], n, inside);
+	{
+		struct text tix, tiy, x, y;
+
+		setnum(&tix, ix);
+		setnum(&tiy, iy);
+		settext(&x, cellcoord(u.x0, u.size, level, ix));
+		settext(&y, cellcoord(u.y0, u.size, level, iy));
+		visit(level, ix, iy, &tix, &tiy, &x, &y, n, inside);
+	}
 	qt_end();
 	progress(1);
 	closeout();
