@@ -9,10 +9,10 @@ CFLAGS = -O2 -g -Wall -Wextra
 QTCFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -ffp-contract=off -Ilib
 LDLIBS = -lm
 
-BIN = polyread qtsplit
-MAN1 = man/polyread.1 man/qtsplit.1
+BIN = polyread qtsplit qtleaves qtstats
+MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1
 MAN5 = man/qtree.5
-LIBOBJ = lib/util.o lib/geom.o lib/stream.o lib/fmtreal.o
+LIBOBJ = lib/util.o lib/geom.o lib/stream.o lib/fmtreal.o lib/area.o
 
 all: $(BIN)
 
@@ -31,7 +31,11 @@ polyread: tools/polyread.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/polyread.o lib/libqtree.a $(LDLIBS)
 qtsplit: tools/qtsplit.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o lib/libqtree.a $(LDLIBS)
-tools/polyread.o tools/qtsplit.o: lib/qtree.h
+qtleaves: tools/qtleaves.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtleaves.o lib/libqtree.a $(LDLIBS)
+qtstats: tools/qtstats.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o lib/libqtree.a $(LDLIBS)
+tools/polyread.o tools/qtsplit.o tools/qtleaves.o tools/qtstats.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it.
@@ -58,6 +62,10 @@ sanitize:
 	    LDFLAGS="$(SANFLAGS)" test
 	$(MAKE) clean
 
+# Times polyread and qtsplit on generated polygons and draws samples/bench.svg.
+bench: all
+	sh tools/bench.sh
+
 # Each parser under AFL++ for FUZZTIME seconds (default 60).
 fuzz:
 	sh tests/fuzz/run.sh
@@ -78,4 +86,4 @@ clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
 	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit
 
-.PHONY: all test demo sanitize fuzz install uninstall clean
+.PHONY: all test demo bench sanitize fuzz install uninstall clean

@@ -14,7 +14,8 @@
 /* (3 + 16 eps) eps, eps = 2^-53: Shewchuk's ccwerrboundA. */
 #define ORIENT_BOUND	(3.3306690738754716e-16)
 
-static void
+/* a + b = *s + *e exactly (Knuth). */
+void
 two_sum(double a, double b, double *s, double *e)
 {
 	double x = a + b, bv = x - a, av = x - bv;
@@ -33,7 +34,8 @@ split(double a, double *hi, double *lo)
 	*lo = a - *hi;
 }
 
-static void
+/* a * b = *p + *e exactly (Dekker), barring overflow and underflow. */
+void
 two_product(double a, double b, double *p, double *e)
 {
 	double x = a * b, ahi, alo, bhi, blo, err;

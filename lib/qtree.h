@@ -44,6 +44,8 @@ char	*fmtreal(char *, double);
 struct point {
 	double	x, y;
 };
+void	 two_sum(double, double, double *, double *);
+void	 two_product(double, double, double *, double *);
 int	 orient2d(double, double, double, double, double, double);
 int	 side_nudged(struct point, struct point, struct point, struct point);
 int	 ray_crosses(struct point, struct point, struct point, struct point);
@@ -132,5 +134,34 @@ unsigned long long qt_written(void);
 double	 cellcoord(double, double, int, uint64_t);
 int	 pathcell(const char *, int, uint64_t *, uint64_t *);
 void	 cellpath(char *, int, uint64_t, uint64_t);
+
+/*
+ * area.c (qtstats): exact sums of products.  An xsum is a floating-point
+ * expansion; xs_round gives the double nearest to its exact value.
+ * struct moments sums mo_edge over the edges of rings: a2 is twice the
+ * signed area, mx and my six times the first moments.
+ */
+struct xsum {
+	double	*h;
+	int	 n, cap, limit;
+};
+struct moments {
+	struct xsum	 a2, mx, my;
+};
+void	 xs_init(struct xsum *);
+void	 xs_free(struct xsum *);
+void	 xs_zero(struct xsum *);
+void	 xs_add(struct xsum *, double);
+void	 xs_addprod(struct xsum *, double, double);
+void	 xs_addprod3(struct xsum *, double, double, double);
+void	 xs_addxs(struct xsum *, const struct xsum *, double);
+int	 xs_sign(const struct xsum *);
+double	 xs_round(const struct xsum *);
+void	 mo_init(struct moments *);
+void	 mo_free(struct moments *);
+void	 mo_zero(struct moments *);
+void	 mo_edge(struct moments *, struct point, struct point);
+void	 mo_addmo(struct moments *, const struct moments *, int);
+void	 mo_result(const struct moments *, double *, double *, double *);
 
 #endif

@@ -1,0 +1,428 @@
+#!/usr/bin/env bats
+# qtstats: every figure on cases computed by hand, and on the amoeba against
+# independent computations in awk.
+
+load test_helper
+
+# Prints the value of key $1 in the qtstats output file $2.
+value() {
+	awk -v k="$1" '$1 == k { print $2; n++ } END { exit n != 1 }' "$2"
+}
+
+@test "a square on cell lines at level 2: every figure by hand" {
+	# the square 1..3 in 0..4: the 4 middle cells of side 1 are full, the
+	# other 12 empty, under the root and 4 nodes
+	run -0 bash -c 'polyread -u 0,0,4 -l 2 "$FIXTURES/square.xy" | qtsplit | qtstats'
+	[ "$output" = "rings 1
+holes 0
+polygon_area 4
+perimeter 8
+centroid_x 2
+centroid_y 2
+cells 21
+nodes 5
+leaves 16
+leaves_F 4
+leaves_E 12
+leaves_P 0
+deepest_level 2
+uniform_cells 16
+saving 1
+max_level_jump 0
+area_full 4
+area_full_partial 4
+area_full_relerr 0
+area_full_partial_relerr 0
+centroid_full_x 2
+centroid_full_y 2
+centroid_full_partial_x 2
+centroid_full_partial_y 2" ]
+}
+
+@test "the same square at level 1: four partial quadrants and no full leaf" {
+	# the outer approximation is the universe, 16 = 4 times the area;
+	# with no F leaf there is no centroid of them
+	run -0 bash -c 'polyread -u 0,0,4 -l 1 "$FIXTURES/square.xy" | qtsplit | qtstats'
+	[ "$output" = "rings 1
+holes 0
+polygon_area 4
+perimeter 8
+centroid_x 2
+centroid_y 2
+cells 5
+nodes 1
+leaves 4
+leaves_F 0
+leaves_E 0
+leaves_P 4
+deepest_level 1
+uniform_cells 4
+saving 1
+max_level_jump 0
+area_full 0
+area_full_partial 16
+area_full_relerr 1
+area_full_partial_relerr 3
+centroid_full_partial_x 2
+centroid_full_partial_y 2" ]
+}
+
+@test "a square with a square hole: every figure by hand" {
+	# 0..4 less 2..3: area 15, perimeter 16 + 4, centroid
+	# (16 * 2 - 1 * 2.5) / 15 = 59/30 in x and y.  Three full quadrants
+	# at level 1; the north-east one splits into 3 full cells and the
+	# hole, an empty one: 7 leaves, 2 nodes, and level 1 next to level 2
+	printf '0 0\n4 0\n4 4\n0 4\n\n2 2\n3 2\n3 3\n2 3\n' > hole.xy
+	run -0 bash -c 'polyread -l 2 hole.xy | qtsplit | qtstats'
+	[ "$output" = "rings 2
+holes 1
+polygon_area 15
+perimeter 20
+centroid_x 1.9666666666666666
+centroid_y 1.9666666666666666
+cells 9
+nodes 2
+leaves 7
+leaves_F 6
+leaves_E 1
+leaves_P 0
+deepest_level 2
+uniform_cells 16
+saving 0.4375
+max_level_jump 1
+area_full 15
+area_full_partial 15
+area_full_relerr 0
+area_full_partial_relerr 0
+centroid_full_x 1.9666666666666666
+centroid_full_y 1.9666666666666666
+centroid_full_partial_x 1.9666666666666666
+centroid_full_partial_y 1.9666666666666666" ]
+	# 59/30 rounded to a double, as awk prints it
+	[ "$(awk 'BEGIN { printf "%.17g", 59 / 30 }')" = 1.9666666666666666 ]
+}
+
+@test "the inverted L and its mesh: every figure and the -l table by hand" {
+	# three full unit squares at (0.5, 0.5), (1.5, 0.5), (0.5, 1.5):
+	# centroid 2.5/3 = 5/6; their 8 distinct corners, none hanging
+	run -0 bash -c 'polyread "$FIXTURES/invl.xy" | qtsplit -l 5 | qtleaves -n | qtstats -l'
+	[ "$output" = "rings 1
+holes 0
+polygon_area 3
+perimeter 8
+centroid_x 0.8333333333333334
+centroid_y 0.8333333333333334
+cells 3
+nodes 0
+leaves 3
+leaves_F 3
+leaves_E 0
+leaves_P 0
+deepest_level 1
+uniform_cells 4
+saving 0.75
+max_level_jump 0
+area_full 3
+area_full_partial 3
+area_full_relerr 0
+area_full_partial_relerr 0
+centroid_full_x 0.8333333333333334
+centroid_full_y 0.8333333333333334
+centroid_full_partial_x 0.8333333333333334
+centroid_full_partial_y 0.8333333333333334
+vertices 8
+elements 3
+elements_quad 3
+hanging_vertices 0
+# level cells nodes leaves leaves_F leaves_E leaves_P
+level 0 0 0 0 0 0 0
+level 1 3 0 3 3 0 0" ]
+	[ "$(awk 'BEGIN { printf "%.17g", 5 / 6 }')" = 0.83333333333333337 ]
+	# the whole tree: the root node and the empty quadrant too
+	run -0 bash -c 'polyread "$FIXTURES/invl.xy" | qtsplit -l 5 | qtstats -l | grep "^level"'
+	[ "$output" = "level 0 1 1 0 0 0 0
+level 1 4 0 4 3 1 0" ]
+}
+
+@test "the triangle: the level jump is L-1 and the areas are 2 -+ 2^(1-L)" {
+	# x + y <= 2 in 0..2: the full south-west quadrant touches partial
+	# cells ever smaller toward (1, 1), down to level L; the diagonal
+	# crosses 2^L cells of area 4^(1-L), half of each inside
+	printf '0 0\n2 0\n0 2\n' > tri.xy
+	for l in 2 3 5; do
+		polyread -l $l tri.xy | qtsplit | qtstats > s
+		[ "$(value max_level_jump s)" = $((l - 1)) ]
+		awk -v l=$l '{ v[$1] = $2 }
+		    END {
+			d = 2 ^ (1 - l)
+			exit !(v["area_full"] == 2 - d &&
+			    v["area_full_partial"] == 2 + d &&
+			    v["area_full_relerr"] == d / 2 &&
+			    v["area_full_partial_relerr"] == d / 2)
+		    }' s
+	done
+	[ "$(value polygon_area s)" = 2 ]
+	# 2/3 and 4 + 2 sqrt(2), to the last digit or two
+	awk '{ v[$1] = $2 }
+	    function near(a, b) { return (a - b) ^ 2 <= (1e-15 * b) ^ 2 }
+	    END { exit !(near(v["centroid_x"], 2 / 3) &&
+		near(v["centroid_y"], 2 / 3) &&
+		near(v["perimeter"], 4 + 2 * sqrt(2))) }' s
+}
+
+@test "the triangle's mesh: 2 hanging vertices, 4 with the empty leaves" {
+	# level 2: the corners (1, 0.5) and (0.5, 1) of the finer cells lie on
+	# the sides of the full south-west quadrant; with the empty leaves,
+	# (1.5, 1) and (1, 1.5) on the sides of the empty north-east one too
+	printf '0 0\n2 0\n0 2\n' > tri.xy
+	run -0 bash -c 'polyread -l 2 tri.xy | qtsplit | qtleaves -n | qtstats | tail -4'
+	[ "$output" = "vertices 16
+elements 7
+elements_quad 7
+hanging_vertices 2" ]
+	run -0 bash -c 'polyread -l 2 tri.xy | qtsplit | qtleaves -n -c FPE | qtstats | tail -4'
+	[ "$output" = "vertices 19
+elements 10
+elements_quad 10
+hanging_vertices 4" ]
+}
+
+@test "hanging vertices of the amoeba's mesh, counted again vertex by side in awk" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | qtleaves -n > m.qt
+	want=$(awk '
+	$1 == "vertex" { n++; vx[n] = $3 + 0; vy[n] = $4 + 0 }
+	$1 == "elem" {
+		for (i = 4; i <= 7; i++) {
+			a = $i; b = $(i == 7 ? 4 : i + 1)
+			for (v = 1; v <= n; v++) {
+				if (vx[a] == vx[b] && vx[v] == vx[a] &&
+				    (vy[v] - vy[a]) * (vy[v] - vy[b]) < 0) h[v]
+				if (vy[a] == vy[b] && vy[v] == vy[a] &&
+				    (vx[v] - vx[a]) * (vx[v] - vx[b]) < 0) h[v]
+			}
+		}
+	}
+	END { for (v in h) c++; print c + 0 }' m.qt)
+	qtstats m.qt > s
+	[ "$(value hanging_vertices s)" = "$want" ]
+	[ "$want" -gt 0 ]
+}
+
+@test "hanging vertices on slanted sides are found exactly" {
+	# by hand: vertex 4, (1, 2), is the midpoint of the side 3-1 of
+	# element 1; vertex 5 lies a hair, 1e-15, above the side 2-3
+	cat > tri.qt <<-EOF
+	qtree 1
+	universe 0 0 4
+	vertex 1 0 0
+	vertex 2 4 0
+	vertex 3 2 4
+	vertex 4 1 2
+	vertex 5 3 2.000000000000001
+	elem 1 tri 1 2 3
+	elem 2 tri 1 2 4
+	elem 3 quad 1 2 5 4
+	end 9
+	EOF
+	run -0 bash -c 'qtstats tri.qt | tail -5'
+	[ "$output" = "vertices 5
+elements 3
+elements_quad 1
+elements_tri 2
+hanging_vertices 1" ]
+}
+
+@test "max_level_jump on the amoeba equals a neighbour search in awk" {
+	for l in 6 8; do
+		polyread "$SAMPLES/amoeba.brep" | qtsplit -l $l > t.qt
+		# for each leaf and side, the leaf holding the same-size cell
+		# across it, found by going up; a finer neighbour finds this one
+		want=$(awk '
+		$1 == "leaf" { n++; L[n] = $3; X[n] = $4; Y[n] = $5; has[$3, $4, $5] }
+		END {
+			for (i = 1; i <= n; i++) {
+				side = 2 ^ L[i]
+				for (d = 1; d <= 4; d++) {
+					nx = X[i] + (d == 1) - (d == 2)
+					ny = Y[i] + (d == 3) - (d == 4)
+					if (nx < 0 || ny < 0 || nx >= side || ny >= side)
+						continue
+					for (j = L[i]; j >= 0; j--) {
+						k = 2 ^ (L[i] - j)
+						if ((j, int(nx / k), int(ny / k)) in has) {
+							if (L[i] - j > best) best = L[i] - j
+							break
+						}
+					}
+				}
+			}
+			print best + 0
+		}' t.qt)
+		qtstats t.qt > s
+		[ "$(value max_level_jump s)" = "$want" ]
+		[ "$want" -gt 0 ]
+	done
+}
+
+@test "a ring counts by its kind, whichever way it runs and wherever it starts" {
+	# the square 0..20 less the unit square at 10..11: 400 - 1 = 399,
+	# centroid (400 * 10 - 10.5) / 399; the hole starts where the sum of
+	# its first three edges has the sign opposite to its whole area
+	for order in "0 0,20 0,20 20,0 20;11 10,10 10,10 11,11 11" \
+	    "0 20,20 20,20 0,0 0;11 10,11 11,10 11,10 10"; do
+		echo "$order" | awk -F ';' '{
+			print "qtree 1"; print "universe 0 0 32"
+			for (r = 1; r <= 2; r++) {
+				n = split($r, v, ",")
+				print "ring", r, r == 1 ? "outer" : "hole", n
+				for (i = 1; i <= n; i++) print "v", v[i]
+			}
+			print "end 11"
+		}' > s.qt
+		qtstats s.qt > s
+		[ "$(value polygon_area s)" = 399 ]
+		[ "$(value perimeter s)" = 84 ]
+		[ "$(value centroid_x s)" = "$(awk 'BEGIN { printf "%.15g", 3989.5 / 399 }')" ]
+	done
+}
+
+@test "the polygon's area is exact where floating point fails" {
+	# a square of side 2 at 1e16: the products of the shoelace formula
+	# are near 1e32 and their rounding errors far exceed the area
+	printf '1e16 1e16\n10000000000000002 1e16\n10000000000000002 10000000000000002\n1e16 10000000000000002\n' > far.xy
+	polyread far.xy | qtstats > s
+	[ "$(value polygon_area s)" = 4 ]
+	[ "$(value perimeter s)" = 8 ]
+	# the plain formula, in awk, does not get it
+	run -0 bash -c 'polyread far.xy | awk -f "$TOP/tests/area.awk" | head -1'
+	[ "$output" != "poly 4" ]
+}
+
+@test "area_full <= polygon_area <= area_full_partial on every sample and amoeba level" {
+	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt "$SAMPLES"/*.poly; do
+		polyread "$f" | qtsplit -l 6 | qtstats > s
+		awk '{ v[$1] = $2 }
+		    END { exit !(v["area_full"] <= v["polygon_area"] &&
+			v["polygon_area"] <= v["area_full_partial"]) }' s
+	done
+	for l in 2 4 6 8 10; do
+		polyread "$SAMPLES/amoeba.brep" | qtsplit -l $l > t.qt
+		qtstats t.qt > s
+		awk '{ v[$1] = $2 }
+		    END { exit !(v["area_full"] <= v["polygon_area"] &&
+			v["polygon_area"] <= v["area_full_partial"]) }' s
+		# the leaf areas agree with sums of SIZE^2 in awk
+		awk -f "$TOP/tests/area.awk" t.qt > a
+		awk 'NR == FNR { v[$1] = $2; next }
+		    function near(a, b) { return (a - b) ^ 2 <= (1e-12 * b) ^ 2 }
+		    $1 == "full" && !near(v["area_full"], $2) { exit 1 }
+		    $1 == "partial" &&
+		    !near(v["area_full_partial"] - v["area_full"], $2) { exit 1 }' s a
+	done
+}
+
+@test "the amoeba's area: its vertices have one decimal, so 200 A is an integer" {
+	polyread "$SAMPLES/amoeba.brep" | qtstats > s
+	# the shoelace sum on the coordinates times 10, in integers
+	want=$(polyread "$SAMPLES/amoeba.brep" | awk '
+	function close_ring(   i, j, a) {
+		for (i = 1; i <= n; i++) {
+			j = i % n + 1
+			a += x[i] * y[j] - x[j] * y[i]
+		}
+		s += a
+	}
+	$1 == "ring" { if (n) close_ring(); n = 0 }
+	$1 == "v" { n++; x[n] = int($2 * 10 + 0.5); y[n] = int($3 * 10 + 0.5) }
+	END { close_ring(); print s }')
+	[ "$want" = 13101 ]
+	# 13101 / 200 = 65.505; the doubles nearest the decimals move it by
+	# far less than the double spacing near 65
+	[ "$(value polygon_area s)" = 65.505 ]
+}
+
+@test "the area errors of the amoeba shrink as the level grows" {
+	for l in 2 4 6 8 10 12; do
+		polyread "$SAMPLES/amoeba.brep" | qtsplit -l $l | qtstats |
+		    awk -v l=$l '$1 ~ /relerr$/ { printf "%s %s ", l, $2 } END { print "" }'
+	done > errs
+	run -0 awk 'NR > 1 && !($2 < f && $4 < p) { print "grew at", $1 }
+	    { f = $2; p = $4 } END { print NR }' errs
+	[ "$output" = 6 ]
+}
+
+@test "-l: the table per level agrees with the cells counted in awk" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 > t.qt
+	qtstats -l t.qt > s
+	want=$(awk '$1 == "node" || $1 == "leaf" {
+		c[$3]++; if ($1 == "node") n[$3]++; else { l[$3]++; k[$3, $9]++ }
+		if ($3 > d) d = $3
+	    }
+	    END {
+		for (i = 0; i <= d; i++)
+			printf "level %d %d %d %d %d %d %d\n", i, c[i], n[i],
+			    l[i], k[i, "F"], k[i, "E"], k[i, "P"]
+	    }' t.qt)
+	[ "$(grep '^level' s)" = "$want" ]
+	[ "$(grep -c '^level' s)" = 9 ]
+	[ "$(grep '^#' s)" = "# level cells nodes leaves leaves_F leaves_E leaves_P" ]
+}
+
+@test "rings alone: the polygon's figures and no cell keys" {
+	run -0 bash -c 'polyread "$FIXTURES/invl.xy" | qtstats | cut -d " " -f 1 | tr "\n" " "'
+	[ "$output" = "rings holes polygon_area perimeter centroid_x centroid_y cells nodes leaves leaves_F leaves_E leaves_P " ]
+}
+
+@test "past level 31 uniform_cells is written as a real" {
+	# the subtree of the triangle under a cell on its diagonal at level 32
+	printf '0 0\n2 0\n0 2\n' > tri.xy
+	polyread tri.xy | qtsplit -l 33 -r 1$(printf '2%.0s' $(seq 31)) |
+	    qtstats > s
+	[ "$(value deepest_level s)" = 33 ]
+	awk '$1 == "uniform_cells" { ok = $2 == 2 ^ 66 && $2 ~ /e\+/ }
+	    END { exit !ok }' s
+}
+
+@test "mesh records are checked: numbering and references" {
+	printf 'qtree 1\nvertex 1 0 0\nvertex 3 1 0\nend 2\n' > a.qt
+	run -1 --separate-stderr qtstats a.qt
+	[ "$stderr" = "qtstats: a.qt:3: vertex 3 follows vertex 1" ]
+	printf 'qtree 1\nvertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 quad 1 2 3 4\nend 4\n' > b.qt
+	run -1 --separate-stderr qtstats b.qt
+	[ "$stderr" = "qtstats: b.qt:5: elem 1 refers to vertex 4, which no vertex record before it defines" ]
+	printf 'qtree 1\nvertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 quad 1 2 3\nend 4\n' > c.qt
+	run -1 --separate-stderr qtstats c.qt
+	[ "$stderr" = "qtstats: c.qt:5: a quad element has 4 vertices, not 3" ]
+	printf 'qtree 1\nvertex 1 0 x\nend 1\n' > d.qt
+	run -1 --separate-stderr qtstats d.qt
+	[ "$stderr" = "qtstats: d.qt:2: vertex coordinate is not a number: x" ]
+}
+
+@test "a truncated stream is an error; a bad option is a usage error" {
+	polyread "$FIXTURES/invl.xy" | qtsplit | sed '$d' > cut.qt
+	run -1 --separate-stderr qtstats cut.qt
+	[[ "$stderr" == "qtstats: cut.qt:"*": truncated stream: no end record" ]]
+	[ -z "$output" ]
+	run -2 --separate-stderr qtstats -x
+	[ "${stderr##*$'\n'}" = "usage: qtstats [-l] [file]" ]
+}
+
+@test "qtstats(1): the examples print what the page says" {
+	page="$TOP/man/qtstats.1"
+	run -0 bash -c 'polyread "$SAMPLES/invl.brep" | qtsplit | qtstats'
+	[ "$output" = "$(sed -n '/^\$ polyread samples\/invl.brep/,/^\.Ed/p' "$page" | sed '1d;$d')" ]
+	# by hand: full squares at (0.5, 0.5), (0.5, 1.5), (1.5, 1.5)
+	[ "${lines[4]}" = "centroid_x 0.8333333333333334" ]
+	[ "${lines[5]}" = "centroid_y 1.1666666666666667" ]
+	run -0 bash -c 'for l in 4 6 8 10; do
+	    polyread "$SAMPLES/amoeba.brep" | qtsplit -l $l | qtstats |
+	    awk -v l=$l '\''$1 == "area_full_relerr" { print l, $2 }'\''
+	  done'
+	[ "$output" = "$(sed -n '/^\$ for l in 4 6 8 10/,/^\.Ed/p' "$page" | sed '1,4d;$d')" ]
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | qtstats -l |
+	    awk '\''$1 == "level" && $2 == 6'\'
+	grep -qx "$output" "$page"
+	run -0 bash -c "printf '0 0\n2 0\n0 2\n' | polyread -l 2 | qtsplit | qtleaves -n |
+	    qtstats | grep -E '^(vertices|elements|hanging)'"
+	[ "$output" = "$(sed -n '/^\$ printf/,/^\.Ed/p' "$page" | sed '1,2d;$d')" ]
+}

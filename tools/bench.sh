@@ -1,0 +1,411 @@
+#!/bin/sh
+# bench.sh: time polyread and qtsplit on generated polygons, print a table
+# and the targets of issue 3 with their figures, and draw samples/bench.svg.
+#
+#   make && sh tools/bench.sh	(from the project root; `make bench` does it)
+#
+# Polygons (tools/genpoly.awk, the same with any awk): star polygons of
+# N = 10^2 ... 10^6 vertices around a square hole, and Koch snowflakes
+# after 3 to 7 steps; universe: polyread's default, the bounding square.
+# For every polygon: polyread alone; then, for each level, qtsplit alone on
+# polyread's saved output and the whole pipeline
+# `polyread FILE | qtsplit -l LEVEL > /dev/null`.  Seconds are the median of
+# several runs, timed by hyperfine(1) when installed (Debian: hyperfine),
+# else by the script itself; peak RSS comes from GNU time's %M (Debian:
+# time), "-" without it.  A pipeline's RSS is the larger of its two
+# processes' (what /usr/bin/time reports for `sh -c 'a | b'`).
+#
+# Cap, to finish in about ten minutes on a 2-core machine: even levels
+# only, 6 to 20 for the stars (every N) and 6 to 16 for the snowflakes.
+# Level 24, for the memory target alone, is run below one level-8 cell the
+# outline crosses (qtsplit -r): the same work per cell and the same depth
+# as the whole tree, without its 4 x 10^8 cells.
+#
+# Environment: BENCH_RUNS (runs per figure under 1 s, default 5; slower
+# figures take 3), BENCH_MAXLEVEL (default 20), BENCH_MAXN (largest star,
+# default 1000000), BENCH_SVG (chart, default samples/bench.svg; "" for
+# none), BENCH_TIMER=self (time runs here even when hyperfine is present).
+
+LC_ALL=C
+export LC_ALL
+
+runs=${BENCH_RUNS:-5}
+maxlevel=${BENCH_MAXLEVEL:-20}
+maxn=${BENCH_MAXN:-1000000}
+svg=${BENCH_SVG-samples/bench.svg}
+starns="100 1000 10000 100000 1000000"
+starlevels="6 8 10 12 14 16 18 20"
+kochiters="3 4 5 6 7"
+kochlevels="6 8 10 12 14 16"
+rlevel=24	# the memory target's deep level
+rdepth=8	# the level of the cell whose subtree it builds
+
+die() {
+	echo "bench: $*" >&2
+	exit 1
+}
+
+[ -x ./polyread ] && [ -x ./qtsplit ] && [ -f tools/genpoly.awk ] ||
+	die "run from the project root after make"
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/qtbench.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' 0
+trap 'exit 1' HUP INT TERM
+
+# Nanoseconds from date(1) when it has them (GNU, busybox); whole seconds
+# are enough to pace the run, not to time one.
+if date +%N | grep -q '^[0-9][0-9]*$'; then
+	now() { date +%s.%N; }
+	fineclock=1
+else
+	now() { date +%s; }
+	fineclock=0
+fi
+
+if [ "${BENCH_TIMER:-}" = self ] && [ $fineclock = 1 ]; then
+	timer=self
+elif command -v hyperfine >/dev/null 2>&1; then
+	timer=hyperfine
+elif [ $fineclock = 1 ]; then
+	timer=self
+else
+	die "need hyperfine, or a date(1) that prints %N"
+fi
+
+if [ -x /usr/bin/time ] && /usr/bin/time -f %M -o "$tmp/rss" true \
+    2>/dev/null; then
+	gnutime=1
+else
+	gnutime=0
+fi
+
+started=$(now)
+
+elapsed() {
+	awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.6f\n", b - a }'
+}
+
+median() {
+	sort -n | awk '{ v[NR] = $1 }
+	    END { if (NR % 2) print v[(NR + 1) / 2]
+		  else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+}
+
+# timeit N CMD: the median seconds of N runs of the shell command CMD,
+# its output thrown away.  hyperfine runs it without its shell correction
+# (-N), as subtracting a shell's start-up, itself noisy, from a run of a
+# millisecond leaves mostly noise; a pipeline therefore counts the start of
+# one sh, about a millisecond, as the script's own timing does.
+timeit() {
+	if [ $timer = hyperfine ]; then
+		case $2 in
+		*'|'*)	set -- "$1" "sh -c '$2 > /dev/null'" ;;
+		esac
+		hyperfine -N --runs "$1" --style none --output null \
+		    --export-csv "$tmp/h.csv" -- "$2" >/dev/null \
+		    2>"$tmp/h.err" ||
+			{ cat "$tmp/h.err" >&2; die "failed: $2"; }
+		# The median is the 4th of 8 fields; count from the end, as
+		# the command may hold commas.
+		awk -F, 'NR == 2 { print $(NF - 4) }' "$tmp/h.csv"
+		return
+	fi
+	: >"$tmp/t"
+	i=0
+	while [ $i -lt "$1" ]; do
+		t0=$(now)
+		sh -c "$2 > /dev/null" || die "failed: $2"
+		elapsed "$t0" >>"$tmp/t"
+		i=$((i + 1))
+	done
+	median <"$tmp/t"
+}
+
+# peak CMD...: run CMD (output to stdout) and leave its peak RSS in KB
+# (or -) in $tmp/rss; returns CMD's status.
+peak() {
+	if [ $gnutime = 1 ]; then
+		/usr/bin/time -f %M -o "$tmp/rss" "$@"
+		return
+	fi
+	echo - >"$tmp/rss"
+	"$@"
+}
+
+rss() {
+	tail -n 1 "$tmp/rss"
+}
+
+# count QT LEVEL [PATH]: the untimed run of qtsplit that learns the number
+# of records (from `end`), its peak RSS and roughly how long one run takes;
+# sets rec, mem and secs.
+count() {
+	t0=$(now)
+	{
+		if [ $# -ge 3 ]; then
+			peak ./qtsplit -l "$2" -r "$3" "$1"
+		else
+			peak ./qtsplit -l "$2" "$1"
+		fi
+		echo "status $?"
+	} | tail -n 2 >"$tmp/cnt"
+	secs=$(elapsed "$t0")
+	mem=$(rss)
+	rec=$(awk '$1 == "end" { print $2 }' "$tmp/cnt")
+	grep -q '^status 0$' "$tmp/cnt" && [ -n "$rec" ] ||
+		die "qtsplit -l $2 ${3:+-r $3 }failed on $1"
+}
+
+# Fast figures are the noisiest: give them more runs, where runs are cheap.
+nruns() {
+	awk -v s="$1" -v r="$runs" 'BEGIN { print (s < 1 || r < 3) ? r : 3 }'
+}
+
+# show POLY N LEVEL STAGE CELLS SECONDS RSS: one line of the table.
+form='%-7s %8s %5s %-9s %10s %10s %12s %11s\n'
+show() {
+	awk -v form="$form" 'BEGIN {
+		c = ARGV[5]; s = ARGV[6]
+		printf form, ARGV[1],
+		    ARGV[2], ARGV[3], ARGV[4], c,
+		    (s + 0 > 0 ? sprintf("%.4g", s) : s),
+		    (c != "-" && s + 0 > 0 ? sprintf("%.0f", c / s) : "-"),
+		    ARGV[7]
+	}' "$@"
+}
+
+# row: show a line and keep it for the targets and the chart.
+row() {
+	printf '%s %s %s %s %s %s %s\n' "$@" >>"$tmp/rows"
+	show "$@"
+}
+
+max() {
+	case $1$2 in
+	*-*)	echo - ;;
+	*)	[ "$1" -ge "$2" ] && echo "$1" || echo "$2" ;;
+	esac
+}
+
+# bench POLY N XY LEVELS: polyread alone, then qtsplit alone and the
+# pipeline at each level.
+bench() {
+	poly=$1 n=$2 xy=$3 levels=$4
+	qt=$tmp/$poly-$n.qt
+	peak ./polyread "$xy" >"$qt" || die "polyread rejects $poly N=$n"
+	prmem=$(rss)
+	t=$(timeit "$runs" "./polyread $xy")
+	row "$poly" "$n" - polyread - "$t" "$prmem"
+	count "$qt" 0
+	nocell=$((rec - 1))	# the one cell at level 0 is the root
+	for l in $levels; do
+		[ "$l" -le "$maxlevel" ] || continue
+		count "$qt" "$l"
+		cells=$((rec - nocell))
+		r=$(nruns "$secs")
+		t=$(timeit "$r" "./qtsplit -l $l $qt")
+		row "$poly" "$n" "$l" qtsplit "$cells" "$t" "$mem"
+		t=$(timeit "$r" "./polyread $xy | ./qtsplit -l $l")
+		row "$poly" "$n" "$l" pipeline "$cells" "$t" \
+		    "$(max "$prmem" "$mem")"
+		echo "$poly $n $l $rec" >>"$tmp/records"
+	done
+}
+
+# rpath QT: the path of the level-$rdepth cell holding the midpoint of the
+# first edge, a point of the outline.
+rpath() {
+	awk -v depth="$rdepth" '
+	BEGIN { nv = 0 }
+	$1 == "universe" { x0 = $2; y0 = $3; size = $4 }
+	$1 == "v" && nv < 2 { x[nv] = $2; y[nv] = $3; nv++ }
+	END {
+		m = 2 ^ depth
+		ix = int(((x[0] + x[1]) / 2 - x0) / size * m)
+		iy = int(((y[0] + y[1]) / 2 - y0) / size * m)
+		for (b = m / 2; b >= 1; b /= 2)
+			p = p (2 * (int(iy / b) % 2) + int(ix / b) % 2)
+		print p
+	}' "$1"
+}
+
+# deep N: the memory target's level-$rlevel run on the star of N vertices;
+# its cells are those of the subtree, and it is not timed.
+deep() {
+	qt=$tmp/star-$1.qt
+	[ -f "$qt" ] || return 0
+	count "$qt" 0
+	nocell=$((rec - 1))
+	p=$(rpath "$qt")
+	count "$qt" "$rlevel" "$p"
+	echo "# subtree: qtsplit -l $rlevel -r $p, star N=$1, not timed"
+	row star "$1" "$rlevel" subtree $((rec - nocell)) - "$mem"
+}
+
+# reader TOOL N LEVEL FILE RECORDS: time a reader of qtree(5) on FILE, the
+# output of qtsplit -l LEVEL on the star of N vertices.
+reader() {
+	[ -x "./$1" ] || return 0
+	t=$(timeit "$runs" "./$1 $4")
+	row star "$2" "$3" "$1" "$5" "$t" -
+}
+
+echo "# qtree benchmark, $(date -u '+%Y-%m-%d %H:%M UTC'), $(uname -sm)," \
+    "$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo '?') CPUs"
+echo "# timer: $timer; runs per figure: $runs under 1 s, else" \
+    "$(nruns 9)"; [ $gnutime = 1 ] ||
+	echo "# no GNU time (Debian package time): peak RSS not measured"
+echo "# seconds: median; cells_per_s: cells / seconds;" \
+    "peak_rss_kb: largest process"
+printf "$form" poly N level stage cells seconds cells_per_s peak_rss_kb
+: >"$tmp/rows"
+: >"$tmp/records"
+
+for n in $starns; do
+	[ "$n" -le "$maxn" ] || continue
+	awk -v shape=star -v n="$n" -f tools/genpoly.awk >"$tmp/star-$n.xy" ||
+		die "genpoly failed"
+	bench star "$n" "$tmp/star-$n.xy" "$starlevels"
+done
+for k in $kochiters; do
+	n=$((3 * (1 << (2 * k))))
+	awk -v shape=koch -v iter="$k" -f tools/genpoly.awk \
+	    >"$tmp/koch-$n.xy" || die "genpoly failed"
+	bench "koch$k" "$n" "$tmp/koch-$n.xy" "$kochlevels"
+done
+
+for n in 1000 100000; do
+	deep "$n"
+done
+
+# A big stream for the readers: the largest star N = 10^3 output on hand.
+big=$(awk '$1 == "star" && $2 == 1000 && $3 <= 16 { l = $3; r = $4 }
+    END { if (r) print l, r }' "$tmp/records")
+if [ -n "$big" ]; then
+	set -- $big
+	./qtsplit -l "$1" "$tmp/star-1000.qt" >"$tmp/big.qt"
+	for tool in qtleaves qtstats qt2svg; do
+		reader "$tool" 1000 "$1" "$tmp/big.qt" "$2"
+	done
+	rm -f "$tmp/big.qt"
+fi
+
+echo
+echo "# targets of issue 3"
+awk -f - "$tmp/rows" <<'EOF'
+{ key = $1 " " $2 " " $3 " " $4; cells[key] = $5; sec[key] = $6
+  mem[key] = $7 }
+
+function has(k) {
+	return (k in sec) && sec[k] != "-"
+}
+
+function verdict(name, fig, ok) {
+	printf "%-58s %-22s %s\n", name, fig, ok
+}
+
+function skip(name) {
+	verdict(name, "not measured", "SKIP")
+}
+
+function timecap(name, k, cap) {
+	if (!has(k))
+		return skip(name)
+	verdict(name, sprintf("%.4g s", sec[k]), sec[k] < cap ? "PASS" : "FAIL")
+}
+
+function percell(k) {
+	return sec[k] / cells[k]
+}
+
+function memratio(n,    a, b, name) {
+	a = "star " n " 12 qtsplit"
+	b = "star " n " 24 subtree"
+	name = "N=" n ": RSS level 24 <= 2 x level 12"
+	if (!(a in mem) || !(b in mem) || mem[a] == "-" || mem[b] == "-")
+		return skip(name)
+	verdict(name, sprintf("%d / %d KB = %.2fx", mem[b], mem[a],
+	    mem[b] / mem[a]), mem[b] <= 2 * mem[a] ? "PASS" : "FAIL")
+}
+
+END {
+	timecap("N=10^3, level 14, pipeline < 0.05 s",
+	    "star 1000 14 pipeline", 0.05)
+	timecap("N=10^5, level 12, pipeline < 0.2 s",
+	    "star 100000 12 pipeline", 0.2)
+
+	k = "star 1000 20 pipeline"
+	name = "N=10^3, level 20, pipeline >= 10 M cells/s"
+	if (has(k))
+		verdict(name, sprintf("%.3g M cells/s", cells[k] / sec[k] / 1e6),
+		    cells[k] / sec[k] >= 1e7 ? "PASS" : "FAIL")
+	else
+		skip(name)
+
+	# Output-sensitive: the stars share one outline, so at the deepest
+	# common level their cell counts agree within a few per cent.
+	name = "s/cell, qtsplit, N=10^6 <= 2 x N=10^3"
+	for (l = 20; l >= 6; l--)
+		if (has("star 1000 " l " qtsplit") &&
+		    has("star 1000000 " l " qtsplit"))
+			break
+	if (l < 6)
+		skip(name)
+	else {
+		a = percell("star 1000 " l " qtsplit")
+		b = percell("star 1000000 " l " qtsplit")
+		verdict(name " (level " l ")", sprintf("%.3g / %.3g ns = %.2fx",
+		    b * 1e9, a * 1e9, b / a), b <= 2 * a ? "PASS" : "FAIL")
+	}
+
+	memratio(1000)
+	memratio(100000)
+	name = "N=10^5: peak RSS, levels 12 and 24, < 64 MB"
+	m = 0
+	split("star 100000 12 pipeline;star 100000 24 subtree;" \
+	    "star 100000 - polyread", ks, ";")
+	for (i = 1; i <= 3; i++) {
+		if (!(ks[i] in mem) || mem[ks[i]] == "-") {
+			m = -1
+			break
+		}
+		if (mem[ks[i]] + 0 > m)
+			m = mem[ks[i]] + 0
+	}
+	if (m < 0)
+		skip(name)
+	else
+		verdict(name, sprintf("%d KB", m), m < 65536 ? "PASS" : "FAIL")
+
+	n = split("qtleaves qtstats qt2svg", tool, " ")
+	for (l = 16; l >= 6; l--)
+		if (has("star 1000 " l " qtleaves") ||
+		    has("star 1000 " l " qtstats") ||
+		    has("star 1000 " l " qt2svg"))
+			break
+	for (i = 1; i <= n; i++) {
+		k = "star 1000 " l " " tool[i]
+		name = tool[i] " reads >= 5 M records/s"
+		if (has(k))
+			verdict(name, sprintf("%.3g M rec/s",
+			    cells[k] / sec[k] / 1e6),
+			    cells[k] / sec[k] >= 5e6 ? "PASS" : "FAIL")
+		else
+			skip(name)
+	}
+}
+EOF
+
+if [ -n "$svg" ]; then
+	note="sh tools/bench.sh, $(date -u '+%Y-%m-%d'), $(uname -m),"
+	note="$note timed by $timer, medians of 3 to $runs runs"
+	awk -v note="$note" -f tools/benchsvg.awk "$tmp/rows" \
+	    >"$tmp/chart.svg" ||
+		die "chart failed"
+	mv "$tmp/chart.svg" "$svg" || die "cannot write $svg"
+	if command -v xmllint >/dev/null 2>&1; then
+		xmllint --noout "$svg" || die "$svg is not well-formed XML"
+	fi
+	echo "# chart: $svg"
+fi
+echo "# total: $(elapsed "$started" | cut -d. -f1) s"

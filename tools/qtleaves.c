@@ -1,0 +1,398 @@
+/*
+ * qtleaves: keep the leaves of a qtree(5) tree, numbered 1, 2, ... in the
+ * order they come (preorder) as the elements of a mesh.  With -n it also
+ * numbers the distinct corners of the kept leaves and writes the mesh as
+ * vertex and elem records.
+ *
+ * Corners are compared exactly, as integer points of the grid at level
+ * QT_MAXLEVEL (G): corner (IX, IY) of a cell at level L is (IX << (G-L),
+ * IY << (G-L)).  Its coordinates are those of the cells' corners, because
+ * X0 + (IX << k) * (SIZE / 2^(L+k)) and X0 + IX * (SIZE / 2^L) round the
+ * same exact product.
+ *
+ * Leaves in preorder are in Z order of their lower left corners, and a
+ * corner (X, Y) belongs only to cells that hold one of the four grid
+ * squares around it, the last of them in Z order being the one whose lower
+ * left is (X, Y).  So once a leaf starts beyond (X, Y) in Z order, that
+ * corner is never met again and leaves the table of live corners, which
+ * stays small; what remains per element is its four vertex numbers and per
+ * vertex its grid point, because all vertex records precede the elements.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "qtree.h"
+
+#define GRID	QT_MAXLEVEL
+
+static struct universe u;
+static char keep[256];
+static int mesh;
+
+static void
+usage(void)
+{
+	fprintf(stderr, "usage: qtleaves [-n] [-c classes] [file]\n");
+	exit(2);
+}
+
+/*
+ * Formatting reals is the costliest part of the output, and the same
+ * coordinates come back again and again (neighbours share columns and
+ * rows), so their text is kept in a small table indexed by a hash of the
+ * level and the column or row.
+ */
+struct coordtext {
+	uint64_t	key;
+	size_t		len;
+	char		text[32];
+};
+
+#define NCOORDTEXT	4096
+static struct coordtext coordtext[2][NCOORDTEXT];
+static char sizetext[QT_MAXLEVEL + 1][32];
+static size_t sizelen[QT_MAXLEVEL + 1];
+
+static void
+inittext(void)
+{
+	int a, i;
+
+	for (a = 0; a < 2; a++)
+		for (i = 0; i < NCOORDTEXT; i++)
+			coordtext[a][i].key = UINT64_MAX;
+	for (i = 0; i <= QT_MAXLEVEL; i++)
+		sizelen[i] = fmtreal(sizetext[i], ldexp(u.size, -i)) -
+		    sizetext[i];
+}
+
+/* Writes the coordinate of grid line i at level on axis 0 (x) or 1 (y). */
+static char *
+putcoord(char *p, int axis, int level, uint64_t i)
+{
+	uint64_t key = i << 6 | (uint64_t)level;
+	struct coordtext *c;
+
+	c = &coordtext[axis][(key * UINT64_C(0x9E3779B97F4A7C15)) >> 52];
+	if (c->key != key) {
+		double v = cellcoord(axis ? u.y0 : u.x0, u.size, level, i);
+
+		c->key = key;
+		c->len = fmtreal(c->text, v) - c->text;
+	}
+	memcpy(p, c->text, c->len);
+	return p + c->len;
+}
+
+static void
+putleaf(const struct cell *c, unsigned long long id)
+{
+	size_t n = strlen(c->path);
+	char *p = qt_record(n + 200);	/* path, 5 numbers, 3 reals */
+
+	memcpy(p, "leaf ", 5);
+	p += 5;
+	memcpy(p, c->path, n);
+	p += n;
+	*p++ = ' ';
+	p = fmtint(p, c->level);
+	*p++ = ' ';
+	p = fmtint(p, (long long)c->ix);
+	*p++ = ' ';
+	p = fmtint(p, (long long)c->iy);
+	*p++ = ' ';
+	p = putcoord(p, 0, c->level, c->ix);
+	*p++ = ' ';
+	p = putcoord(p, 1, c->level, c->iy);
+	*p++ = ' ';
+	memcpy(p, sizetext[c->level], sizelen[c->level]);
+	p += sizelen[c->level];
+	*p++ = ' ';
+	*p++ = c->class;
+	*p++ = ' ';
+	p = fmtint(p, (long long)id);
+	*p++ = '\n';
+	qt_recorded(p);
+}
+
+/* Is grid point (ax, ay) before (bx, by) in Z order? */
+static int
+zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
+{
+	uint64_t dx = ax ^ bx, dy = ay ^ by;
+
+	/*
+	 * The coordinate whose highest differing bit is higher decides; y
+	 * wins a tie, its bit being the higher one in a path digit.
+	 */
+	if (dy < dx && dy < (dx ^ dy))
+		return ax < bx;
+	return ay < by;
+}
+
+/*
+ * The live corners: open addressing, linear probing, at most half full.
+ * Id 0 marks a free slot.
+ */
+struct vslot {
+	uint64_t	x, y;
+	uint32_t	id;
+};
+
+static struct vslot *live;
+static size_t livecap, nlive;
+static uint64_t curx, cury;	/* lower left of the leaf being meshed */
+
+static uint64_t (*vert)[2];	/* grid point of each vertex */
+static size_t nvert, vertcap;
+static uint32_t (*elem)[4];	/* vertex numbers of each element */
+static size_t nelem, elemcap;
+
+static size_t
+vhash(uint64_t x, uint64_t y)
+{
+	uint64_t h = x * UINT64_C(0x9E3779B97F4A7C15) ^
+	    y * UINT64_C(0xC2B2AE3D27D4EB4F);
+
+	return (h ^ h >> 31) & (livecap - 1);
+}
+
+static void
+liveinsert(const struct vslot *v)
+{
+	size_t k;
+
+	for (k = vhash(v->x, v->y); live[k].id != 0; k = (k + 1) & (livecap - 1))
+		;
+	live[k] = *v;
+	nlive++;
+}
+
+/*
+ * Drops the corners that no leaf from the current one on can have, and
+ * doubles the table when that frees too little.
+ */
+static void
+liveprune(void)
+{
+	struct vslot *old = live;
+	size_t oldcap = livecap, i, keepn = 0;
+
+	for (i = 0; i < oldcap; i++)
+		if (old[i].id != 0 && !zbefore(old[i].x, old[i].y, curx, cury))
+			keepn++;
+	livecap = oldcap ? oldcap : 1024;
+	while (4 * (keepn + 1) > livecap)
+		livecap *= 2;
+	live = xreallocarray(NULL, livecap, sizeof(*live));
+	memset(live, 0, livecap * sizeof(*live));
+	nlive = 0;
+	for (i = 0; i < oldcap; i++)
+		if (old[i].id != 0 && !zbefore(old[i].x, old[i].y, curx, cury))
+			liveinsert(&old[i]);
+	free(old);
+}
+
+/* The number of the corner at grid point (x, y); a new one is numbered. */
+static uint32_t
+vertex(uint64_t x, uint64_t y)
+{
+	struct vslot v;
+	size_t k;
+
+	/* pruning keeps the current leaf's corners: none lies before it */
+	if (2 * (nlive + 1) > livecap)
+		liveprune();
+	for (k = vhash(x, y); live[k].id != 0; k = (k + 1) & (livecap - 1))
+		if (live[k].x == x && live[k].y == y)
+			return live[k].id;
+	if (nvert == UINT32_MAX)
+		die(1, "more than %lu vertices", (unsigned long)UINT32_MAX);
+	if (nvert == vertcap) {
+		vertcap = vertcap ? 2 * vertcap : 1024;
+		vert = xreallocarray(vert, vertcap, sizeof(*vert));
+	}
+	vert[nvert][0] = x;
+	vert[nvert][1] = y;
+	v.x = x;
+	v.y = y;
+	v.id = ++nvert;
+	liveinsert(&v);
+	return v.id;
+}
+
+/* Every leaf passes here with -n, kept or not, to check the order. */
+static void
+meshleaf(struct qtreader *r, const struct cell *c, int kept)
+{
+	static int first = 1;
+	int shift = GRID - c->level;
+	uint64_t x = c->ix << shift, y = c->iy << shift;
+	uint64_t s = (uint64_t)1 << shift;
+
+	if (!first && !zbefore(curx, cury, x, y))
+		qt_fail(r, "leaf %s is out of preorder (-n needs the leaves "
+		    "in preorder)", c->path);
+	first = 0;
+	curx = x;
+	cury = y;
+	if (!kept)
+		return;
+	if (nelem == elemcap) {
+		elemcap = elemcap ? 2 * elemcap : 1024;
+		elem = xreallocarray(elem, elemcap, sizeof(*elem));
+	}
+	/* counter-clockwise from the lower left */
+	elem[nelem][0] = vertex(x, y);
+	elem[nelem][1] = vertex(x + s, y);
+	elem[nelem][2] = vertex(x + s, y + s);
+	elem[nelem][3] = vertex(x, y + s);
+	nelem++;
+}
+
+static void
+writemesh(void)
+{
+	char line[128], *p;
+	size_t i;
+	int k;
+
+	for (i = 0; i < nvert; i++) {
+		p = line;
+		memcpy(p, "vertex ", 7);
+		p += 7;
+		p = fmtint(p, (long long)(i + 1));
+		*p++ = ' ';
+		p = putcoord(p, 0, GRID, vert[i][0]);
+		*p++ = ' ';
+		p = putcoord(p, 1, GRID, vert[i][1]);
+		qt_raw(line, p - line);
+	}
+	for (i = 0; i < nelem; i++) {
+		p = line;
+		memcpy(p, "elem ", 5);
+		p += 5;
+		p = fmtint(p, (long long)(i + 1));
+		memcpy(p, " quad", 5);
+		p += 5;
+		for (k = 0; k < 4; k++) {
+			*p++ = ' ';
+			p = fmtint(p, elem[i][k]);
+		}
+		qt_raw(line, p - line);
+	}
+}
+
+static void
+setclasses(const char *s)
+{
+	if (*s == '\0')
+		die(2, "-c: no classes given (a string of F, E and P)");
+	memset(keep, 0, sizeof(keep));
+	for (; *s != '\0'; s++) {
+		if (*s != 'F' && *s != 'E' && *s != 'P')
+			die(2, "-c: unknown class %c (F, E or P)", *s);
+		keep[(unsigned char)*s] = 1;
+	}
+}
+
+static int
+istag(const char *line, const char *tag)
+{
+	size_t n = strlen(tag);
+
+	return strncmp(line, tag, n) == 0 &&
+	    (line[n] == ' ' || line[n] == '\0');
+}
+
+int
+main(int argc, char *argv[])
+{
+	struct qtreader r;
+	struct qtrec rec;
+	struct ring ring;
+	enum qtkind kind;
+	const char *name;
+	size_t vcapring = 0;
+	unsigned long long id = 0;
+	int ch, kept;
+	FILE *fp;
+
+	setprogname_(argv[0]);
+	setclasses("FP");
+	while ((ch = getopt(argc, argv, "c:n")) != -1)
+		switch (ch) {
+		case 'c':
+			setclasses(optarg);
+			break;
+		case 'n':
+			mesh = 1;
+			break;
+		default:
+			usage();
+		}
+	argc -= optind;
+	argv += optind;
+	if (argc > 1)
+		usage();
+
+	fp = openin(argc == 1 ? argv[0] : "-", &name);
+	qt_open(&r, fp, name);
+	memset(&ring, 0, sizeof(ring));
+	qt_header();
+	while ((kind = qt_read(&r, &rec)) != QT_EOF) {
+		switch (kind) {
+		case QT_UNIVERSE:
+			u = rec.u;
+			inittext();
+			qt_universe(&u);
+			break;
+		case QT_LEVEL:
+			qt_level(rec.level);
+			break;
+		case QT_RING:
+			ring.id = rec.ringid;
+			ring.hole = rec.hole;
+			ring.n = 0;
+			break;
+		case QT_VERTEX:
+			if (ring.n == vcapring) {
+				vcapring = vcapring ? 2 * vcapring : 64;
+				ring.v = xreallocarray(ring.v, vcapring,
+				    sizeof(*ring.v));
+			}
+			ring.v[ring.n++] = rec.v;
+			/* the reader counts the ring's v records for us */
+			if (r.vleft == 0)
+				qt_ring(&ring);
+			break;
+		case QT_NODE:
+			break;
+		case QT_LEAF:
+			kept = keep[(unsigned char)rec.c.class];
+			if (kept)
+				putleaf(&rec.c, ++id);
+			if (mesh)
+				meshleaf(&r, &rec.c, kept);
+			break;
+		default:
+			if (istag(rec.line, "vertex") || istag(rec.line, "elem"))
+				qt_fail(&r, "the input already holds a mesh "
+				    "(%s record): qtleaves reads a tree",
+				    istag(rec.line, "elem") ? "elem" : "vertex");
+			qt_raw(rec.line, rec.len);
+			break;
+		}
+	}
+	qt_close(&r);
+	free(ring.v);
+	if (mesh)
+		writemesh();
+	qt_end();
+	closeout();
+	return 0;
+}
