@@ -830,11 +830,34 @@ testpair(const struct edge *e, const struct edge *f)
 	addtouch(e->ring, f->ring, p);
 }
 
+/*
+ * Whether the edge meets the closed box: the boxes overlap and the box's
+ * corners are not all strictly on one side of the edge.  A segment that
+ * merely has its bounding box over the box is left out, or long slanted
+ * edges would crowd every bucket they pass near.
+ */
 static int
-overlapsbox(const struct edge *e, const double *box)
+meetsbox(const struct edge *e, const double *box)
 {
-	return e->xmax >= box[0] && e->xmin <= box[2] && e->ymax >= box[1] &&
-	    e->ymin <= box[3];
+	struct point a, b;
+	int c, pos = 0, neg = 0;
+
+	if (e->xmax < box[0] || e->xmin > box[2] || e->ymax < box[1] ||
+	    e->ymin > box[3])
+		return 0;
+	if (e->xmin >= box[0] && e->xmax <= box[2] && e->ymin >= box[1] &&
+	    e->ymax <= box[3])
+		return 1;
+	a = ep(e, 0);
+	b = ep(e, 1);
+	for (c = 0; c < 4; c++) {
+		int o = orient2d(a.x, a.y, b.x, b.y, box[c & 1 ? 2 : 0],
+		    box[c & 2 ? 3 : 1]);
+
+		pos |= o >= 0;
+		neg |= o <= 0;
+	}
+	return pos && neg;
 }
 
 static int
@@ -862,32 +885,38 @@ testbucket(size_t *list, size_t n)
 }
 
 /*
- * Halves the box across its longer side until few edges remain, so that
- * only the edges that straddle a cut are tested twice.  When every edge
- * straddles the cut, cutting cannot help and the bucket is tested whole.
+ * Halves the box until few edges remain, so that only the edges that cross
+ * a cut are tested twice: across the longer side, else across the other
+ * when every edge crosses the first cut.  When every edge crosses both,
+ * cutting cannot help and the bucket is tested whole.
  */
 static void
 crossings(size_t *list, size_t n, const double *box, int depth)
 {
 	size_t i, *sub[2], k[2];
 	double half[2][4], mid;
-	int side, axis;
+	int side, axis, tries;
 
 	if (n <= 16 || depth >= 64) {
 		testbucket(list, n);
 		return;
 	}
+	sub[0] = xreallocarray(NULL, n, sizeof(*sub[0]));
+	sub[1] = xreallocarray(NULL, n, sizeof(*sub[1]));
 	axis = box[2] - box[0] >= box[3] - box[1] ? 0 : 1;
-	mid = box[axis] + (box[axis + 2] - box[axis]) / 2;
-	for (side = 0; side < 2; side++) {
-		memcpy(half[side], box, sizeof(half[side]));
-		half[side][side ? axis : axis + 2] = mid;
-		sub[side] = xreallocarray(NULL, n, sizeof(*sub[side]));
-		for (i = k[side] = 0; i < n; i++)
-			if (overlapsbox(&edges[list[i]], half[side]))
-				sub[side][k[side]++] = list[i];
+	for (tries = 0; tries < 2; tries++, axis = !axis) {
+		mid = box[axis] + (box[axis + 2] - box[axis]) / 2;
+		for (side = 0; side < 2; side++) {
+			memcpy(half[side], box, sizeof(half[side]));
+			half[side][side ? axis : axis + 2] = mid;
+			for (i = k[side] = 0; i < n; i++)
+				if (meetsbox(&edges[list[i]], half[side]))
+					sub[side][k[side]++] = list[i];
+		}
+		if (k[0] < n || k[1] < n)
+			break;
 	}
-	if (k[0] == n && k[1] == n)
+	if (tries == 2)
 		testbucket(list, n);
 	else
 		for (side = 0; side < 2; side++)
