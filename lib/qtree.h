@@ -85,6 +85,13 @@ struct qtrec {
 	struct cell	 c;	/* QT_NODE, QT_LEAF */
 };
 
+struct qtcoord {
+	int		 valid;
+	uint64_t	 i;
+	double		 v;
+	char		 text[32];
+};
+
 struct qtreader {
 	FILE		*fp;
 	const char	*name;
@@ -97,6 +104,7 @@ struct qtreader {
 	long		 nrings;
 	int		 haveuniverse, havelevel, havecells;
 	struct universe	 u;
+	struct qtcoord	 coord[QT_MAXLEVEL + 1][3][2];	/* stream.c */
 };
 
 struct ring {

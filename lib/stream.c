@@ -124,6 +124,33 @@ nfields(struct qtreader *r, struct qtrec *rec, int lo, int hi)
 		    rec->field[0], rec->nfield, hi);
 }
 
+/*
+ * Reads a cell's x, y or size, which must be the value v.  Writers print
+ * the shortest text, so the field is first compared with the text of v,
+ * kept per level, axis and column parity (siblings share columns and
+ * rows); only another spelling of the number needs parsing.  Returns
+ * whether the field is v.
+ */
+static int
+coordfield(struct qtreader *r, const char *text, int level, int axis,
+    uint64_t i, double v, double *out)
+{
+	struct qtcoord *k = &r->coord[level][axis][i & 1];
+
+	if (!k->valid || k->i != i) {
+		k->i = i;
+		k->v = v;
+		fmtreal(k->text, v);
+		k->valid = 1;
+	}
+	if (strcmp(text, k->text) == 0) {
+		*out = v;
+		return 1;
+	}
+	*out = realfield(r, text, axis == 0 ? "x" : axis == 1 ? "y" : "size");
+	return *out == v;
+}
+
 static void
 parsecell(struct qtreader *r, struct qtrec *rec)
 {
@@ -150,13 +177,12 @@ parsecell(struct qtreader *r, struct qtrec *rec)
 		qt_fail(r, "cell %s is at column %llu row %llu, not %s %s",
 		    c->path, (unsigned long long)ix, (unsigned long long)iy,
 		    rec->field[3], rec->field[4]);
-	c->x = realfield(r, rec->field[5], "x");
-	c->y = realfield(r, rec->field[6], "y");
-	c->size = realfield(r, rec->field[7], "size");
 	x = cellcoord(r->u.x0, r->u.size, c->level, ix);
 	y = cellcoord(r->u.y0, r->u.size, c->level, iy);
 	size = ldexp(r->u.size, -c->level);
-	if (c->x != x || c->y != y || c->size != size) {
+	if (!coordfield(r, rec->field[5], c->level, 0, ix, x, &c->x) ||
+	    !coordfield(r, rec->field[6], c->level, 1, iy, y, &c->y) ||
+	    !coordfield(r, rec->field[7], c->level, 2, 0, size, &c->size)) {
 		char bx[32], by[32], bs[32];
 
 		fmtreal(bx, x);
@@ -178,11 +204,12 @@ parsecell(struct qtreader *r, struct qtrec *rec)
 
 static const struct {
 	const char	*tag;
+	size_t		 len;
 	enum qtkind	 kind;
 } tags[] = {
-	{ "universe", QT_UNIVERSE }, { "level", QT_LEVEL },
-	{ "ring", QT_RING }, { "v", QT_VERTEX }, { "node", QT_NODE },
-	{ "leaf", QT_LEAF },
+	{ "leaf", 4, QT_LEAF }, { "node", 4, QT_NODE }, { "v", 1, QT_VERTEX },
+	{ "ring", 4, QT_RING }, { "level", 5, QT_LEVEL },
+	{ "universe", 8, QT_UNIVERSE },
 };
 
 /* Splits the line at single spaces; refuses empty fields. */
@@ -216,9 +243,11 @@ body(struct qtreader *r, struct qtrec *rec)
 
 	rec->kind = QT_OTHER;
 	for (i = 0; i < sizeof(tags) / sizeof(tags[0]); i++)
-		if (strlen(tags[i].tag) == taglen &&
-		    strncmp(tags[i].tag, rec->line, taglen) == 0)
+		if (tags[i].len == taglen &&
+		    memcmp(tags[i].tag, rec->line, taglen) == 0) {
 			rec->kind = tags[i].kind;
+			break;
+		}
 	if (r->vleft > 0 && rec->kind != QT_VERTEX)
 		qt_fail(r, "ring %ld is missing %zu of its v records",
 		    r->nrings, r->vleft);

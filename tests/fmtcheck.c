@@ -84,9 +84,58 @@ reference(char *buf, size_t size, double v)
 	return snprintf(buf, size, "%.*g", p, v);
 }
 
+/*
+ * parsereal must read what strtod reads, bit for bit, wherever the value
+ * is a normal double (it refuses the rest as out of range).
+ */
+static void
+parsecheck(const char *s)
+{
+	const char *end;
+	double want = strtod(s, NULL), got;
+	int rc = parsereal(s, &end, &got);
+
+	if (want != 0 && !(fabs(want) >= DBL_MIN && fabs(want) <= DBL_MAX))
+		return;
+	if (want == 0)
+		want = 0.0;
+	if (rc != 0 || *end != '\0' || memcmp(&got, &want, sizeof(got)) != 0) {
+		failed++;
+		printf("parsereal(\"%s\"): got %a (rc %d), strtod %a\n", s, got,
+		    rc, want);
+	} else
+		passed++;
+}
+
+/* Random decimals: up to 20 digits, a point anywhere, exponents to 40. */
+static void
+randomdecimals(unsigned long n)
+{
+	char s[64];
+
+	while (n-- > 0) {
+		int len = 1 + (int)rndupto(19), point = (int)rndupto(len), i;
+		char *p = s;
+
+		if (rnd() & 1)
+			*p++ = '-';
+		for (i = 0; i < len; i++) {
+			if (i == point)
+				*p++ = '.';
+			*p++ = '0' + (char)rndupto(9);
+		}
+		if (rnd() & 1)
+			p += sprintf(p, "e%d", (int)rndupto(80) - 40);
+		*p = '\0';
+		parsecheck(s);
+	}
+}
+
 static void
 check(double v)
 {
+	char full[40];
+
 	char got[64], want[64];
 	char *end;
 
@@ -98,6 +147,9 @@ check(double v)
 		printf("%a: got \"%.31s\", want \"%s\"\n", v, got, want);
 	} else
 		passed++;
+	parsecheck(got);
+	snprintf(full, sizeof(full), "%.17g", v);
+	parsecheck(full);
 }
 
 static double
@@ -234,6 +286,7 @@ main(int argc, char *argv[])
 	hardcases();
 	randombits(n);
 	cellcoords(n);
+	randomdecimals(n);
 	printf("fmtcheck: %lu passed, %lu failed\n", passed, failed);
 	return failed != 0;
 }
