@@ -9,8 +9,9 @@ CFLAGS = -O2 -g -Wall -Wextra
 QTCFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -ffp-contract=off -Ilib
 LDLIBS = -lm
 
-BIN = polyread qtsplit qtleaves qtstats
-MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1
+BIN = polyread qtsplit qtleaves qtstats qt2svg
+MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
+	man/qt2svg.1
 MAN5 = man/qtree.5
 LIBOBJ = lib/util.o lib/geom.o lib/stream.o lib/fmtreal.o lib/area.o
 
@@ -35,7 +36,10 @@ qtleaves: tools/qtleaves.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtleaves.o lib/libqtree.a $(LDLIBS)
 qtstats: tools/qtstats.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o lib/libqtree.a $(LDLIBS)
-tools/polyread.o tools/qtsplit.o tools/qtleaves.o tools/qtstats.o: lib/qtree.h
+qt2svg: tools/qt2svg.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qt2svg.o lib/libqtree.a $(LDLIBS)
+tools/polyread.o tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
+tools/qt2svg.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it.

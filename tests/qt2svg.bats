@@ -1,0 +1,348 @@
+#!/usr/bin/env bats
+# qt2svg: well-formed SVG, one square per leaf, pixel colours from a real
+# renderer, the y axis, the mesh and its numbers, and the errors.  Expected
+# coordinates follow from the man page's px/py formulas by hand; expected
+# colours are the palette the man page gives.
+#
+# Debian packages: libxml2-utils (xmllint), librsvg2-bin (rsvg-convert) and
+# netpbm (pngtopnm); a test that needs one that is absent is skipped, and
+# says which.
+
+load test_helper
+
+F='#0072B2'
+E='#56B4E9'
+WHITE='#FFFFFF'
+
+need() {
+	command -v "$1" > /dev/null || skip "$1 is absent (Debian package $2)"
+}
+
+# Renders an SVG to PNG, for pixel.
+render() {
+	need rsvg-convert librsvg2-bin
+	need pngtopnm netpbm
+	rsvg-convert -o "$2" "$1"
+}
+
+# The colour of pixel X Y (columns and rows from the upper left) of a PNG,
+# as #RRGGBB, read from netpbm's plain PPM: P3, width, height, maximum, then
+# three numbers per pixel, row by row.
+pixel() {
+	pngtopnm -plain "$1" 2> /dev/null | awk -v x="$2" -v y="$3" '
+	    { sub(/#.*/, ""); for (i = 1; i <= NF; i++) t[n++] = $i }
+	    END {
+		if (t[0] != "P3" || t[3] != 255) { print "not 8-bit P3"; exit }
+		k = 4 + 3 * (y * t[1] + x)
+		printf "#%02X%02X%02X\n", t[k], t[k + 1], t[k + 2]
+	    }'
+}
+
+# Squares per class: "F n", "E n", "P n", counting the subpaths in the
+# leaves-C groups.
+squares() {
+	awk '/^<g id="leaves-/ { c = substr($2, 12, 1) }
+	    /^<path/ && c != "" { n[c] += gsub(/M/, "") }
+	    /^<\/g>/ { c = "" }
+	    END { printf "F %d\nE %d\nP %d\n", n["F"], n["E"], n["P"] }' "$@"
+}
+
+# The lines of the group with this id, without its own tags.
+group() {
+	awk -v id="$1" '$0 ~ "^<g id=\"" id "\"" { on = 1; next }
+	    on && /^<\/g>/ { on = 0 } on' "$2"
+}
+
+# A square of side 4 with a square hole of side 2 in the universe's lower
+# left quarter.  At level 3 in the universe 0 0 8 the cells are unit
+# squares: the 12 around the hole are F, the 4 in the hole and the 3
+# quarters of side 4 are E.
+holed() {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 3\n3 3\n3 1\n' > holed.xy
+	polyread -u 0,0,8 -l 3 holed.xy | qtsplit > holed.qt
+}
+
+# The four unit leaves of the universe 0 0 2, numbered, and their mesh by
+# hand: vertices row by row from the lower left.
+mesh() {
+	cat > mesh.qt <<-EOF
+	qtree 1
+	universe 0 0 2
+	level 1
+	leaf 0 1 0 0 0 0 1 F 1
+	leaf 1 1 1 0 1 0 1 F 2
+	leaf 2 1 0 1 0 1 1 F 3
+	leaf 3 1 1 1 1 1 1 E 4
+	vertex 1 0 0
+	vertex 2 1 0
+	vertex 3 2 0
+	vertex 4 0 1
+	vertex 5 1 1
+	vertex 6 2 1
+	vertex 7 0 2
+	vertex 8 1 2
+	vertex 9 2 2
+	elem 1 quad 1 2 5 4
+	elem 2 quad 2 3 6 5
+	elem 3 quad 4 5 8 7
+	elem 4 quad 5 6 9 8
+	end 19
+	EOF
+}
+
+@test "a bad option prints the usage and exits 2" {
+	run -2 --separate-stderr qt2svg -x
+	[[ "$stderr" == *"usage: qt2svg [-nN] [-c classes] [-m margin] [-w width] [file]" ]]
+	run -2 --separate-stderr qt2svg a b
+	[[ "$stderr" == *usage:* ]]
+}
+
+@test "-c takes only F, E and P; -w and -m take whole pixels that leave room" {
+	for bad in '-c Q' '-c FX' '-w 0' '-w 12.5' '-w x' '-m -1' '-w 100 -m 50'; do
+		run -2 --separate-stderr qt2svg $bad /dev/null
+		[[ "$stderr" == qt2svg:* ]]
+		[ -z "$output" ]
+	done
+}
+
+@test "the amoeba's tree is well-formed XML" {
+	need xmllint libxml2-utils
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | qt2svg > a.svg
+	run -0 xmllint --noout a.svg
+	[ -z "$output" ]
+	run -0 head -2 a.svg
+	[ "${lines[0]}" = '<?xml version="1.0" encoding="UTF-8"?>' ]
+	[[ "${lines[1]}" == '<svg xmlns="http://www.w3.org/2000/svg" version="1.1" '* ]]
+}
+
+@test "rings alone, a mesh with numbers, and nothing drawn are well-formed XML" {
+	need xmllint libxml2-utils
+	mesh
+	polyread "$SAMPLES/amoeba.brep" | qt2svg > rings.svg
+	qt2svg -nN mesh.qt > mesh.svg
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 3 | qt2svg -c P > p.svg
+	printf 'qtree 1\nuniverse 0 0 1\nend 1\n' | qt2svg > empty.svg
+	run -0 xmllint --noout rings.svg mesh.svg p.svg empty.svg
+	[ -z "$output" ]
+}
+
+@test "one square is drawn per leaf, in its class's group" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 > a.qt
+	run -0 diff -u <(leafcounts a.qt) <(qt2svg a.qt | squares)
+	# and the report's figures, as qtsplit's tests know them
+	run -0 squares <(qt2svg a.qt)
+	[ "$output" = "$(printf 'F 291\nE 320\nP 344')" ]
+}
+
+@test "-c draws only the classes asked for" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 > a.qt
+	run -0 squares <(qt2svg -c F a.qt)
+	[ "$output" = "$(printf 'F 291\nE 0\nP 0')" ]
+	run -0 squares <(qt2svg -c PE a.qt)
+	[ "$output" = "$(printf 'F 0\nE 320\nP 344')" ]
+	run -1 grep -c 'id="leaves-F"' <(qt2svg -c PE a.qt)
+}
+
+@test "large trees come in path elements of at most 1000 squares" {
+	# every cell at level 7: 16384 leaves, most of them empty
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 7 -m 7 > a.qt
+	qt2svg a.qt > a.svg
+	run -0 diff -u <(leafcounts a.qt) <(squares a.svg)
+	run -0 awk '/^<path/ { n = gsub(/M/, ""); if (n > max) max = n }
+	    END { print max }' a.svg
+	[ "$output" -le 1000 ]
+	[ "$(group leaves-E a.svg | grep -c '^<path')" -gt 1 ]
+}
+
+@test "a leaf's square lies where the formulas put it" {
+	# universe 0 0 4, -w 100 -m 10: 20 pixels per unit, y from the top
+	printf '0 2\n4 2\n4 4\n0 4\n' > upper.xy
+	polyread -u 0,0,4 -l 1 upper.xy | qtsplit > upper.qt
+	qt2svg -w 100 upper.qt > upper.svg
+	run -0 group leaves-F upper.svg
+	[ "$output" = '<path d="M10 10h40v40h-40zM50 10h40v40h-40z"/>' ]
+	run -0 group leaves-E upper.svg
+	[ "$output" = '<path d="M10 50h40v40h-40zM50 50h40v40h-40z"/>' ]
+	run -0 group outer-rings upper.svg
+	[ "$output" = '<path d="M10 50 90 50 90 10 10 10 10 50"/>' ]
+	run -0 grep -c '^<svg .* width="100" height="[0-9]*" viewBox="0 0 100 ' upper.svg
+}
+
+@test "a real renderer shows F and E cells and the hole in their colours" {
+	holed
+	qt2svg -w 180 holed.qt > holed.svg
+	render holed.svg holed.png
+	# 20 pixels per unit: world (x, y) is pixel (10 + 20x, 10 + 20(8 - y))
+	run -0 pixel holed.png 20 160	# F cell 0 0
+	[ "$output" = "$F" ]
+	run -0 pixel holed.png 80 120	# F cell 3 2
+	[ "$output" = "$F" ]
+	run -0 pixel holed.png 40 140	# the hole, cell 1 1
+	[ "$output" = "$E" ]
+	run -0 pixel holed.png 130 50	# E quarter 4 4
+	[ "$output" = "$E" ]
+}
+
+@test "classes left out by -c leave the background" {
+	holed
+	qt2svg -w 180 -c F holed.qt > holed.svg
+	render holed.svg holed.png
+	run -0 pixel holed.png 20 160
+	[ "$output" = "$F" ]
+	run -0 pixel holed.png 40 140
+	[ "$output" = "$WHITE" ]
+	run -0 pixel holed.png 130 50
+	[ "$output" = "$WHITE" ]
+}
+
+@test "the y axis points up: a region in the upper half fills the upper half" {
+	printf '0 2\n4 2\n4 4\n0 4\n' > upper.xy
+	polyread -u 0,0,4 -l 1 upper.xy | qtsplit | qt2svg -w 100 > upper.svg
+	render upper.svg upper.png
+	# 20 pixels per unit: y 3 is row 30, y 1 row 70
+	run -0 pixel upper.png 30 30
+	[ "$output" = "$F" ]
+	run -0 pixel upper.png 70 30
+	[ "$output" = "$F" ]
+	run -0 pixel upper.png 30 70
+	[ "$output" = "$E" ]
+	run -0 pixel upper.png 70 70
+	[ "$output" = "$E" ]
+}
+
+@test "the same input gives the same bytes, from a file or a pipe" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 7 | qtleaves -n > a.qt
+	qt2svg -nN a.qt > one.svg
+	qt2svg -nN a.qt > two.svg
+	qt2svg -nN < a.qt > three.svg
+	run -0 cmp one.svg two.svg
+	run -0 cmp one.svg three.svg
+}
+
+@test "mesh elements and vertices are drawn from the mesh records" {
+	mesh
+	qt2svg -w 200 mesh.qt > mesh.svg
+	# 90 pixels per unit: vertex 5 (1, 1) is pixel 100 100
+	run -0 group elements mesh.svg
+	[ "$output" = '<path d="M10 190 100 190 100 100 10 100zM100 190 190 190 190 100 100 100zM10 100 100 100 100 10 10 10zM100 100 190 100 190 10 100 10z"/>' ]
+	group vertices mesh.svg > dots
+	[ "$(grep -o 'M[0-9. ]*h0' dots | wc -l)" -eq 9 ]
+	run -0 grep -c 'M100 100h0' mesh.svg
+}
+
+@test "vertices may come after the elements that name them" {
+	mesh
+	qt2svg -w 200 mesh.qt > before.svg
+	awk '$1 != "vertex" && $1 != "end" { print }
+	    END { for (i = 1; i <= 9; i++) print v[i]; print "end 19" }
+	    $1 == "vertex" { v[$2] = $0 }' mesh.qt > after.qt
+	qt2svg -w 200 after.qt > after.svg
+	run -0 diff -u <(group elements before.svg) <(group elements after.svg)
+}
+
+@test "-n numbers elements at their centres, -N vertices beside them" {
+	mesh
+	qt2svg -w 200 -nN mesh.qt > mesh.svg
+	# once each, from the elem records, not again from the leaves
+	run -0 group element-numbers mesh.svg
+	[ "${#lines[@]}" -eq 4 ]
+	# element 1 spans pixels 10 to 100 across and 100 to 190 down
+	[[ "${lines[0]}" == '<text x="55" y="'* ]]
+	[[ "${lines[0]}" == *'>1</text>' ]]
+	[ "$(echo "${lines[0]}" | sed 's/.* y="\([0-9.]*\)".*/\1/')" \
+	    \> 145 ]
+	run -0 group vertex-numbers mesh.svg
+	[ "${#lines[@]}" -eq 9 ]
+	[[ "${lines[4]}" == *'>5</text>' ]]
+}
+
+@test "-n takes the leaves' numbers when there are no elem records" {
+	mesh
+	grep -v '^vertex\|^elem' mesh.qt | sed 's/^end 19/end 6/' > leaves.qt
+	qt2svg -n leaves.qt > l.svg
+	group element-numbers l.svg > numbers
+	run -0 sed 's/.*>\([0-9]*\)<.*/\1/' numbers
+	[ "$output" = "$(printf '1\n2\n3\n4')" ]
+	# -c F keeps the numbers of F leaves only
+	run -0 bash -c 'qt2svg -n -c F leaves.qt | grep -c "</text>$"'
+	[ "$output" -ge 3 ]
+	run -1 grep '>4</text>' <(qt2svg -n -c F leaves.qt)
+}
+
+@test "-n and -N with nothing to number say so and draw the rest" {
+	printf 'qtree 1\nuniverse 0 0 1\nend 1\n' > e.qt
+	run -0 --separate-stderr qt2svg -nN e.qt
+	[[ "$stderr" == *'-n: no element numbers'* ]]
+	[[ "$stderr" == *'-N: no vertex records'* ]]
+	[[ "$output" == *'</svg>' ]]
+}
+
+@test "qtleaves' mesh of the amoeba draws every element and vertex" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 | qtleaves -n > m.qt
+	qt2svg -nN m.qt > m.svg
+	nelem=$(grep -c '^elem ' m.qt)
+	nvert=$(grep -c '^vertex ' m.qt)
+	[ "$(group elements m.svg | grep -o M | wc -l)" -eq "$nelem" ]
+	[ "$(group vertices m.svg | grep -o M | wc -l)" -eq "$nvert" ]
+	[ "$(group element-numbers m.svg | wc -l)" -eq "$nelem" ]
+	[ "$(group vertex-numbers m.svg | wc -l)" -eq "$nvert" ]
+}
+
+@test "a bad mesh record is reported with its line and exits 1" {
+	mesh
+	check() {	# line, replacement, words of the message
+		sed "$1s/.*/$2/" mesh.qt > bad.qt
+		run -1 --separate-stderr qt2svg bad.qt
+		[ -z "$output" ]
+		[[ "$stderr" == "qt2svg: bad.qt:$1: "*"$3"* ]]
+	}
+	check 8 'vertex 1 x 0' 'not a number'
+	check 8 'vertex 0 0 0' 'not a positive integer'
+	check 8 'vertex 1 0' 'fields'
+	check 8 'vertex 1 0 3' 'outside the universe'
+	check 8 'vertex 1  0 0' 'empty field'
+	check 17 'elem 1 quad 1 2 5' 'expected 4'
+	check 17 'elem 1 Quad 1 2 5 4' 'not a word'
+	check 4 'leaf 0 1 0 0 0 0 1 F one' 'element id'
+	# an element naming a vertex nobody defines, and a vertex defined twice
+	check 17 'elem 1 quad 1 2 5 10' 'vertex 10'
+	check 9 'vertex 1 1 0' 'again'
+}
+
+@test "a defective or truncated stream writes nothing and exits 1" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 4 | sed '$d' > cut.qt
+	run -1 --separate-stderr qt2svg cut.qt
+	[ -z "$output" ]
+	[[ "$stderr" == "qt2svg: cut.qt:"*"truncated"* ]]
+	run -1 --separate-stderr qt2svg <<< 'qtree 1'
+	[ -z "$output" ]
+	printf 'qtree 1\nlevel 2\nend 1\n' > nou.qt
+	run -1 --separate-stderr qt2svg nou.qt
+	[[ "$stderr" == *'no universe record'* ]]
+}
+
+@test "a million cells make a file that xmllint and rsvg-convert read" {
+	need xmllint libxml2-utils
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 10 -m 10 | qt2svg > big.svg
+	[ "$(squares big.svg | awk '{ n += $2 } END { print n }')" -eq 1048576 ]
+	[ "$(wc -c < big.svg)" -gt 10000000 ]
+	run -0 xmllint --noout big.svg
+	[ -z "$output" ]
+	need rsvg-convert librsvg2-bin
+	run -0 rsvg-convert -o big.png big.svg
+}
+
+@test "the man page's example counts the leaves drawn" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 > amoeba6.qt
+	run -0 bash -c 'qt2svg amoeba6.qt | awk '\''/^<g id="leaves-/ { c = substr($2, 12, 1) }
+	    /^<path/ && c != "" { n[c] += gsub(/M/, "") }
+	    /^<\/g>/ { c = "" } END { for (k in n) print k, n[k] }'\'' | sort'
+	[ "$output" = "$(printf 'E 320\nF 291\nP 344')" ]
+}
+
+@test "a full disk is an error, not a picture" {
+	[ -w /dev/full ] || skip "no /dev/full here"
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 > a.qt
+	run -1 --separate-stderr bash -c 'qt2svg a.qt > /dev/full'
+	[[ "$stderr" == 'qt2svg: write error'* ]]
+}

@@ -1,0 +1,854 @@
+/*
+ * qt2svg: draw a qtree(5) stream as one standalone SVG 1.1 picture.
+ *
+ * The universe fills the width less the margins, y pointing up as in the
+ * world.  Leaves are filled by class, every class in few path elements of
+ * many square subpaths, so that a million cells stay a file a renderer can
+ * take.  The mesh's elements, the rings, the mesh's vertices and the
+ * numbers go on top in that order, and a legend below the map.  Nothing is
+ * written before the end record: the picture is held in memory, as text
+ * about the size of the output, so an invalid stream gives no half-written
+ * file.  Coordinates are whole
+ * hundredths of a pixel, computed from the cell corners that qtree(5)
+ * defines, so neighbouring squares share their edges exactly and the same
+ * input always gives the same bytes.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "qtree.h"
+
+/*
+ * Subpaths per path element.  libxml2 2.9, and so librsvg, stops with
+ * "Huge input lookup" once a file of attributes longer than about 100 kB
+ * passes 10 MB; 1000 squares make about 30 kB, and any size then reads.
+ */
+#define CHUNK	1000
+#define RINGCHUNK 2000	/* ring vertices per path element */
+#define ROW	16		/* legend row height, pixels */
+
+enum { CF, CE, CP, NCLASS };
+
+static const char classletter[NCLASS] = { 'F', 'E', 'P' };
+static const char *classname[NCLASS] = { "full", "empty", "partial" };
+/* Okabe and Ito's palette: blue, sky blue, orange. */
+static const char *classcolour[NCLASS] = { "#0072B2", "#56B4E9", "#E69F00" };
+
+struct buf {
+	char	*p;
+	size_t	 len, cap;
+};
+
+struct vertex {
+	long long	 id;
+	long		 line;
+	long long	 x, y;		/* hundredths of a pixel */
+};
+
+struct elem {
+	long long	 id;
+	long		 line;
+	size_t		 first, nv;	/* into elemverts */
+};
+
+static int width = 800, margin = 10, nflag, Nflag;
+static int drawn[NCLASS];
+static struct universe u;
+static double scale;		/* pixels per world unit */
+
+static struct buf leaves[NCLASS];
+static unsigned long long nleaves[NCLASS];
+static double finest = -1;	/* side of the smallest thing drawn, pixels */
+
+/* Ring styles, which the legend repeats. */
+static const char ringstyle[] = "stroke=\"#000000\" stroke-width=\"1.5\"";
+static const char holestyle[] = "stroke-dasharray=\"5 3\"";
+
+static struct buf ringpath[2];	/* outer rings, holes */
+static long nrings[2];
+static size_t ringpathverts[2];
+static int ringkind;
+static size_t ringleft, ringsize;
+static long long ringfirstx, ringfirsty, ringlastx, ringlasty;
+
+static struct vertex *verts;
+static size_t nverts, vertcap;
+static struct buf dots, vertlabels;
+
+static struct elem *elems;
+static size_t nelems, elemcap;
+static long long *elemverts;
+static size_t nelemverts, elemvertcap;
+
+static struct buf meshpath, elemlabels;
+
+static struct buf leaflabels;
+static unsigned long long nleaflabels;
+
+static void
+usage(void)
+{
+	fprintf(stderr, "usage: qt2svg [-nN] [-c classes] [-m margin] "
+	    "[-w width] [file]\n");
+	exit(2);
+}
+
+static void
+put(struct buf *b, const char *s, size_t n)
+{
+	if (b->len + n > b->cap) {
+		b->cap = b->cap + n > 2 * b->cap ? b->cap + n : 2 * b->cap;
+		b->p = xreallocarray(b->p, b->cap, 1);
+	}
+	memcpy(b->p + b->len, s, n);
+	b->len += n;
+}
+
+static void
+putstr(struct buf *b, const char *s)
+{
+	put(b, s, strlen(s));
+}
+
+/* Hundredths as a decimal without trailing zeros: 1250 is "12.5". */
+static char *
+fmthund(char *p, long long v)
+{
+	unsigned long long a = v < 0 ? -(unsigned long long)v :
+	    (unsigned long long)v;
+
+	if (v < 0)
+		*p++ = '-';
+	p = fmtint(p, (long long)(a / 100));
+	if (a % 100 != 0) {
+		*p++ = '.';
+		*p++ = '0' + a % 100 / 10;
+		if (a % 10 != 0)
+			*p++ = '0' + a % 10;
+	}
+	*p = '\0';
+	return p;
+}
+
+static void
+puthund(struct buf *b, long long v)
+{
+	char tmp[32];
+
+	put(b, tmp, fmthund(tmp, v) - tmp);
+}
+
+/* A pair "X Y" in hundredths. */
+static void
+putxy(struct buf *b, long long x, long long y)
+{
+	puthund(b, x);
+	put(b, " ", 1);
+	puthund(b, y);
+}
+
+/* Far outside any picture, but an integer still. */
+static long long
+hund(double px)
+{
+	if (px > 1e12)
+		px = 1e12;
+	if (px < -1e12)
+		px = -1e12;
+	return llround(px * 100);
+}
+
+static long long
+pixelx(double x)
+{
+	return hund(margin + (x - u.x0) * scale);
+}
+
+/* The world's y grows upward, the picture's downward. */
+static long long
+pixely(double y)
+{
+	return hund(margin + (u.size - (y - u.y0)) * scale);
+}
+
+static void
+seefeature(double px)
+{
+	if (finest < 0 || px < finest)
+		finest = px;
+}
+
+static int
+classindex(char class)
+{
+	return class == 'F' ? CF : class == 'E' ? CE : CP;
+}
+
+static void
+label(struct buf *b, long long x, long long y, double size, long long id)
+{
+	char num[24];
+	double fs;
+	int digits = fmtint(num, id) - num;
+
+	/* Wide enough for the digits, never larger than the legend's text. */
+	fs = size * 1.4 / (digits > 2 ? digits : 2);
+	if (fs > 12)
+		fs = 12;
+	if (fs < 0.01)
+		fs = 0.01;
+	/* The digits' middle, not their baseline, on the point. */
+	putstr(b, "<text x=\"");
+	puthund(b, x);
+	putstr(b, "\" y=\"");
+	puthund(b, y + hund(0.35 * fs));
+	putstr(b, "\" font-size=\"");
+	puthund(b, hund(fs));
+	putstr(b, "\">");
+	putstr(b, num);
+	putstr(b, "</text>\n");
+}
+
+static long long
+positiveid(struct qtreader *r, const char *s, const char *what)
+{
+	const char *end;
+	long long v;
+
+	if (parselong(s, &end, &v) < 0 || *end != '\0' || v < 1)
+		qt_fail(r, "%s is not a positive integer: %s", what, s);
+	return v;
+}
+
+static double
+coordinate(struct qtreader *r, const char *s, const char *what)
+{
+	const char *end;
+	double v;
+	int rc = parsereal(s, &end, &v);
+
+	if (rc == -2)
+		qt_fail(r, "%s out of range: %s", what, s);
+	if (rc < 0 || *end != '\0')
+		qt_fail(r, "%s is not a number: %s", what, s);
+	if (!coordok(v))
+		qt_fail(r, "%s outside the supported range "
+		    "(0 or 1e-100 to 1e100 in magnitude): %s", what, s);
+	return v;
+}
+
+static void
+leaf(struct qtreader *r, const struct qtrec *rec)
+{
+	const struct cell *c = &rec->c;
+	int k = classindex(c->class);
+	long long x0, x1, y0, y1, id = 0;
+	struct buf *b = &leaves[k];
+
+	if (rec->nfield == 10)
+		id = positiveid(r, rec->field[9], "element id");
+	if (!drawn[k])
+		return;
+	x0 = pixelx(c->x);
+	x1 = pixelx(cellcoord(u.x0, u.size, c->level, c->ix + 1));
+	y0 = pixely(c->y);
+	y1 = pixely(cellcoord(u.y0, u.size, c->level, c->iy + 1));
+	if (nleaves[k] > 0 && nleaves[k] % CHUNK == 0)
+		putstr(b, "\"/>\n<path d=\"");
+	put(b, "M", 1);
+	putxy(b, x0, y1);
+	put(b, "h", 1);
+	puthund(b, x1 - x0);
+	put(b, "v", 1);
+	puthund(b, y0 - y1);
+	put(b, "h", 1);
+	puthund(b, x0 - x1);
+	put(b, "z", 1);
+	nleaves[k]++;
+	seefeature(ldexp(u.size, -c->level) * scale);
+	if (nflag && id > 0) {
+		label(&leaflabels, (x0 + x1) / 2, (y0 + y1) / 2,
+		    (x1 - x0) / 100.0, id);
+		nleaflabels++;
+	}
+}
+
+static void
+ringstart(const struct qtrec *rec)
+{
+	ringkind = rec->hole;
+	ringleft = ringsize = rec->nvert;
+	nrings[ringkind]++;
+}
+
+/*
+ * A ring is an open polyline back to its first vertex, so that a long one
+ * can go on in the next path element from where the last one stopped.
+ */
+static void
+ringto(long long x, long long y)
+{
+	struct buf *b = &ringpath[ringkind];
+	size_t *n = &ringpathverts[ringkind];
+
+	if (*n >= RINGCHUNK) {
+		putstr(b, "\"/>\n<path d=\"M");
+		putxy(b, ringlastx, ringlasty);
+		*n = 1;
+	}
+	put(b, " ", 1);
+	putxy(b, x, y);
+	(*n)++;
+	ringlastx = x;
+	ringlasty = y;
+}
+
+static void
+ringvertex(struct point v)
+{
+	struct buf *b = &ringpath[ringkind];
+	size_t *n = &ringpathverts[ringkind];
+	long long x = pixelx(v.x), y = pixely(v.y);
+
+	if (ringleft == ringsize) {
+		if (*n >= RINGCHUNK) {
+			putstr(b, "\"/>\n<path d=\"");
+			*n = 0;
+		}
+		put(b, "M", 1);
+		putxy(b, x, y);
+		(*n)++;
+		ringfirstx = ringlastx = x;
+		ringfirsty = ringlasty = y;
+	} else
+		ringto(x, y);
+	if (--ringleft == 0)
+		ringto(ringfirstx, ringfirsty);
+}
+
+/* Splits an unknown record at single spaces, as the reader does. */
+static int
+split(struct qtreader *r, char *line, char **field, int max)
+{
+	int n = 0, i;
+
+	for (;;) {
+		if (n == max)
+			qt_fail(r, "too many fields");
+		field[n++] = line;
+		if ((line = strchr(line, ' ')) == NULL)
+			break;
+		*line++ = '\0';
+	}
+	for (i = 0; i < n; i++)
+		if (field[i][0] == '\0')
+			qt_fail(r, "empty field (fields are separated by one "
+			    "space)");
+	return n;
+}
+
+static void
+meshvertex(struct qtreader *r, char **field, int n)
+{
+	struct vertex *v;
+	char num[24];
+	double x, y;
+
+	if (n != 4)
+		qt_fail(r, "vertex record has %d fields, expected 4", n);
+	if (!r->haveuniverse)
+		qt_fail(r, "vertex record before the universe record");
+	if (nverts == vertcap) {
+		vertcap = vertcap ? 2 * vertcap : 256;
+		verts = xreallocarray(verts, vertcap, sizeof(*verts));
+	}
+	v = &verts[nverts++];
+	v->id = positiveid(r, field[1], "vertex id");
+	v->line = r->lineno;
+	x = coordinate(r, field[2], "x");
+	y = coordinate(r, field[3], "y");
+	if (x < u.x0 || x - u.x0 > u.size || y < u.y0 || y - u.y0 > u.size)
+		qt_fail(r, "vertex %s lies outside the universe", field[1]);
+	v->x = pixelx(x);
+	v->y = pixely(y);
+	if (nverts > 1 && (nverts - 1) % CHUNK == 0)
+		putstr(&dots, "\"/>\n<path d=\"");
+	put(&dots, "M", 1);
+	putxy(&dots, v->x, v->y);
+	put(&dots, "h0", 2);
+	if (Nflag) {
+		/* Above and to the right of the dot, clear of its lines. */
+		putstr(&vertlabels, "<text x=\"");
+		puthund(&vertlabels, v->x + 150);
+		putstr(&vertlabels, "\" y=\"");
+		puthund(&vertlabels, v->y - 150);
+		putstr(&vertlabels, "\">");
+		putstr(&vertlabels, (fmtint(num, v->id), num));
+		putstr(&vertlabels, "</text>\n");
+	}
+}
+
+static void
+meshelem(struct qtreader *r, char **field, int n)
+{
+	struct elem *e;
+	const char *p;
+	int i, want = 0;
+
+	if (n < 6)
+		qt_fail(r, "elem record has %d fields, expected at least 6", n);
+	for (p = field[2]; *p != '\0'; p++)
+		if ((*p < 'a' || *p > 'z') && (*p < '0' || *p > '9'))
+			qt_fail(r, "element type is not a word: %s", field[2]);
+	if (strcmp(field[2], "quad") == 0)
+		want = 4;
+	else if (strcmp(field[2], "tri") == 0)
+		want = 3;
+	if (want > 0 && n != 3 + want)
+		qt_fail(r, "%s element has %d vertices, expected %d", field[2],
+		    n - 3, want);
+	if (nelems == elemcap) {
+		elemcap = elemcap ? 2 * elemcap : 256;
+		elems = xreallocarray(elems, elemcap, sizeof(*elems));
+	}
+	e = &elems[nelems++];
+	e->id = positiveid(r, field[1], "element id");
+	e->line = r->lineno;
+	e->first = nelemverts;
+	e->nv = n - 3;
+	for (i = 3; i < n; i++) {
+		if (nelemverts == elemvertcap) {
+			elemvertcap = elemvertcap ? 2 * elemvertcap : 1024;
+			elemverts = xreallocarray(elemverts, elemvertcap,
+			    sizeof(*elemverts));
+		}
+		elemverts[nelemverts++] = positiveid(r, field[i], "vertex id");
+	}
+}
+
+static void
+other(struct qtreader *r, struct qtrec *rec)
+{
+	char *field[64];
+	int n;
+
+	if (strncmp(rec->line, "vertex ", 7) == 0) {
+		n = split(r, rec->line, field, 64);
+		meshvertex(r, field, n);
+	} else if (strncmp(rec->line, "elem ", 5) == 0) {
+		n = split(r, rec->line, field, 64);
+		meshelem(r, field, n);
+	}
+	/* Other records are for other programs. */
+}
+
+static int
+byid(const void *a, const void *b)
+{
+	const struct vertex *va = a, *vb = b;
+
+	if (va->id != vb->id)
+		return va->id < vb->id ? -1 : 1;
+	return va->line < vb->line ? -1 : va->line > vb->line;
+}
+
+static const struct vertex *
+findvertex(const struct vertex *sorted, long long id)
+{
+	size_t lo = 0, hi = nverts;
+
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (sorted[mid].id < id)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo < nverts && sorted[lo].id == id ? &sorted[lo] : NULL;
+}
+
+/*
+ * Turns the elements into path text now that every vertex is known, so
+ * that vertices may come in any order.
+ */
+static void
+meshpaths(const char *name)
+{
+	struct buf *path = &meshpath;
+	struct vertex *sorted;
+	size_t i, k;
+
+	sorted = xreallocarray(NULL, nverts, sizeof(*sorted));
+	if (nverts > 0)
+		memcpy(sorted, verts, nverts * sizeof(*sorted));
+	qsort(sorted, nverts, sizeof(*sorted), byid);
+	for (i = 1; i < nverts; i++)
+		if (sorted[i].id == sorted[i - 1].id)
+			errat(name, sorted[i].line, "vertex %lld is defined "
+			    "again (first at line %ld)", sorted[i].id,
+			    sorted[i - 1].line);
+	for (i = 0; i < nelems; i++) {
+		const struct elem *e = &elems[i];
+		long long xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+		long long sx = 0, sy = 0;
+
+		if (i > 0 && i % CHUNK == 0)
+			putstr(path, "\"/>\n<path d=\"");
+		for (k = 0; k < e->nv; k++) {
+			const struct vertex *v;
+
+			v = findvertex(sorted, elemverts[e->first + k]);
+			if (v == NULL)
+				errat(name, e->line, "element %lld uses vertex "
+				    "%lld, which the stream does not define",
+				    e->id, elemverts[e->first + k]);
+			put(path, k == 0 ? "M" : " ", 1);
+			putxy(path, v->x, v->y);
+			if (k == 0 || v->x < xmin)
+				xmin = v->x;
+			if (k == 0 || v->x > xmax)
+				xmax = v->x;
+			if (k == 0 || v->y < ymin)
+				ymin = v->y;
+			if (k == 0 || v->y > ymax)
+				ymax = v->y;
+			sx += v->x;
+			sy += v->y;
+		}
+		put(path, "z", 1);
+		seefeature((xmax - xmin < ymax - ymin ? xmax - xmin :
+		    ymax - ymin) / 100.0);
+		if (nflag)
+			label(&elemlabels, sx / (long long)e->nv,
+			    sy / (long long)e->nv,
+			    (xmax - xmin) / 100.0, e->id);
+	}
+	free(sorted);
+}
+
+static void
+out(const char *s, size_t n)
+{
+	if (n > 0 && fwrite(s, 1, n, stdout) != n)
+		die(1, "write error: %s", strerror(errno ? errno : EIO));
+}
+
+static void
+outs(const char *s)
+{
+	out(s, strlen(s));
+}
+
+static void
+outbuf(const struct buf *b)
+{
+	out(b->p, b->len);
+}
+
+static void
+outhund(long long v)
+{
+	char tmp[32];
+
+	fmthund(tmp, v);
+	outs(tmp);
+}
+
+/* A group of path elements whose data is b, split already at chunks. */
+static void
+outpaths(const char *head, const struct buf *b)
+{
+	if (b->len == 0)
+		return;
+	outs(head);
+	outs("<path d=\"");
+	outbuf(b);
+	outs("\"/>\n</g>\n");
+}
+
+static double
+clamp(double v, double lo, double hi)
+{
+	return v < lo ? lo : v > hi ? hi : v;
+}
+
+static void
+legendrow(int row, const char *swatch, const char *text, long long count)
+{
+	char num[24];
+	long long top = (long long)(width + ROW * row + 2) * 100;
+
+	fmtint(num, count);
+	outs(swatch);
+	outs(" x=\"");
+	outhund((long long)margin * 100);
+	outs("\" y=\"");
+	outhund(top);
+	outs("\" width=\"12\" height=\"12\"/>\n<text x=\"");
+	outhund((long long)(margin + 18) * 100);
+	outs("\" y=\"");
+	outhund(top + 1050);
+	outs("\">");
+	outs(text);
+	outs(" ");
+	outs(num);
+	outs("</text>\n");
+}
+
+static int
+legendrows(void)
+{
+	int k, n = 0;
+
+	for (k = 0; k < NCLASS; k++)
+		n += drawn[k];
+	return n + (nrings[0] > 0) + (nrings[1] > 0) + (nelems > 0) +
+	    (nverts > 0);
+}
+
+static void
+legend(void)
+{
+	char swatch[256], text[32];
+	int k, row = 0;
+
+	if (legendrows() == 0)
+		return;
+	outs("<g id=\"legend\" font-family=\"sans-serif\" font-size=\"12\">\n");
+	for (k = 0; k < NCLASS; k++) {
+		if (!drawn[k])
+			continue;
+		snprintf(swatch, sizeof(swatch), "<rect fill=\"%s\" "
+		    "stroke=\"#000000\" stroke-opacity=\"0.35\"",
+		    classcolour[k]);
+		snprintf(text, sizeof(text), "%c %s", classletter[k],
+		    classname[k]);
+		legendrow(row++, swatch, text, nleaves[k]);
+	}
+	/* Ring and mesh swatches are squares drawn the way the map draws. */
+	if (nrings[0] > 0) {
+		snprintf(swatch, sizeof(swatch), "<rect fill=\"none\" %s",
+		    ringstyle);
+		legendrow(row++, swatch, "outer rings", nrings[0]);
+	}
+	if (nrings[1] > 0) {
+		snprintf(swatch, sizeof(swatch), "<rect fill=\"none\" %s %s",
+		    ringstyle, holestyle);
+		legendrow(row++, swatch, "holes", nrings[1]);
+	}
+	if (nelems > 0)
+		legendrow(row++, "<rect fill=\"none\" stroke=\"#000000\"",
+		    "elements", nelems);
+	if (nverts > 0)
+		legendrow(row++, "<rect fill=\"#000000\" rx=\"6\"",
+		    "vertices", nverts);
+	outs("</g>\n");
+}
+
+static void
+svghead(long long height)
+{
+	char x0[32], y0[32], size[32];
+
+	printf("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+	    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
+	    "width=\"%d\" height=\"%lld\" viewBox=\"0 0 %d %lld\">\n"
+	    "<title>qtree</title>\n", width, height, width, height);
+	fmtreal(x0, u.x0);
+	fmtreal(y0, u.y0);
+	fmtreal(size, u.size);
+	printf("<desc>universe %s %s %s, drawn by qt2svg</desc>\n", x0, y0,
+	    size);
+	outs("<rect width=\"100%\" height=\"100%\" fill=\"#FFFFFF\"/>\n");
+}
+
+/* Everything but the numbers and the legend; f is the finest side. */
+static void
+shapes(double f)
+{
+	char head[256], outline[128], num[32];
+	int k;
+
+	/*
+	 * Outlines of cells under 2 pixels would only darken the picture,
+	 * and antialiasing would leave light seams between the squares:
+	 * there, every pixel takes the colour of the cell at its centre.
+	 */
+	fmthund(num, hund(clamp(f / 8, 0.01, 1)));
+	if (f >= 2)
+		snprintf(outline, sizeof(outline), "stroke=\"#000000\" "
+		    "stroke-opacity=\"0.35\" stroke-width=\"%s\"", num);
+	else
+		snprintf(outline, sizeof(outline),
+		    "shape-rendering=\"crispEdges\"");
+	for (k = 0; k < NCLASS; k++) {
+		snprintf(head, sizeof(head), "<g id=\"leaves-%c\" fill=\"%s\" "
+		    "%s>\n", classletter[k], classcolour[k], outline);
+		outpaths(head, &leaves[k]);
+	}
+	snprintf(head, sizeof(head), "<g id=\"elements\" fill=\"none\" "
+	    "stroke=\"#000000\" stroke-width=\"%s\" "
+	    "stroke-linejoin=\"round\">\n", num);
+	outpaths(head, &meshpath);
+	snprintf(head, sizeof(head), "<g id=\"outer-rings\" fill=\"none\" %s "
+	    "stroke-linejoin=\"round\">\n", ringstyle);
+	outpaths(head, &ringpath[0]);
+	snprintf(head, sizeof(head), "<g id=\"holes\" fill=\"none\" %s %s "
+	    "stroke-linejoin=\"round\">\n", ringstyle, holestyle);
+	outpaths(head, &ringpath[1]);
+	/* A zero-length line with round caps is a dot. */
+	fmthund(num, hund(clamp(f / 5, 0.5, 5)));
+	snprintf(head, sizeof(head), "<g id=\"vertices\" fill=\"none\" "
+	    "stroke=\"#000000\" stroke-width=\"%s\" "
+	    "stroke-linecap=\"round\">\n", num);
+	outpaths(head, &dots);
+}
+
+static void
+numbers(double f)
+{
+	const struct buf *b = nelems > 0 ? &elemlabels : &leaflabels;
+
+	if (nflag && b->len > 0) {
+		outs("<g id=\"element-numbers\" font-family=\"sans-serif\" "
+		    "text-anchor=\"middle\" fill=\"#000000\">\n");
+		outbuf(b);
+		outs("</g>\n");
+	}
+	if (Nflag && vertlabels.len > 0) {
+		outs("<g id=\"vertex-numbers\" font-family=\"sans-serif\" "
+		    "font-size=\"");
+		outhund(hund(clamp(f / 3, 1, 10)));
+		outs("\" fill=\"#000000\">\n");
+		outbuf(&vertlabels);
+		outs("</g>\n");
+	}
+}
+
+static void
+writesvg(void)
+{
+	double f = finest >= 0 ? finest : width - 2 * margin;
+	int rows = legendrows();
+
+	svghead(width + (long long)ROW * rows + (rows > 0 ? margin : 0));
+	shapes(f);
+	numbers(f);
+	legend();
+	outs("</svg>\n");
+}
+
+static void
+classes(const char *arg)
+{
+	const char *p;
+	int k;
+
+	if (*arg == '\0')
+		die(2, "-c: no class given (a word of F, E and P)");
+	for (p = arg; *p != '\0'; p++) {
+		for (k = 0; k < NCLASS; k++)
+			if (*p == classletter[k])
+				break;
+		if (k == NCLASS)
+			die(2, "-c: classes are F, E and P: %s", arg);
+		drawn[k] = 1;
+	}
+}
+
+static int
+pixels(int ch, const char *arg, long long lo)
+{
+	const char *end;
+	long long v;
+
+	if (parselong(arg, &end, &v) < 0 || *end != '\0' || v < lo ||
+	    v > 1000000)
+		die(2, "-%c: pixels must be an integer from %lld to 1000000: "
+		    "%s", ch, lo, arg);
+	return v;
+}
+
+int
+main(int argc, char *argv[])
+{
+	struct qtreader r;
+	struct qtrec rec;
+	enum qtkind kind;
+	const char *name;
+	FILE *fp;
+	int ch;
+
+	setprogname_(argv[0]);
+	classes("FEP");
+	while ((ch = getopt(argc, argv, "c:m:nNw:")) != -1)
+		switch (ch) {
+		case 'c':
+			memset(drawn, 0, sizeof(drawn));
+			classes(optarg);
+			break;
+		case 'm':
+			margin = pixels(ch, optarg, 0);
+			break;
+		case 'n':
+			nflag = 1;
+			break;
+		case 'N':
+			Nflag = 1;
+			break;
+		case 'w':
+			width = pixels(ch, optarg, 1);
+			break;
+		default:
+			usage();
+		}
+	argc -= optind;
+	argv += optind;
+	if (argc > 1)
+		usage();
+	if (width - 2 * margin < 1)
+		die(2, "-m %d leaves no room in -w %d", margin, width);
+
+	fp = openin(argc == 1 ? argv[0] : "-", &name);
+	qt_open(&r, fp, name);
+	while ((kind = qt_read(&r, &rec)) != QT_EOF) {
+		switch (kind) {
+		case QT_UNIVERSE:
+			u = rec.u;
+			scale = (width - 2 * margin) / u.size;
+			break;
+		case QT_RING:
+			ringstart(&rec);
+			break;
+		case QT_VERTEX:
+			ringvertex(rec.v);
+			break;
+		case QT_LEAF:
+			leaf(&r, &rec);
+			break;
+		case QT_OTHER:
+			other(&r, &rec);
+			break;
+		default:
+			break;
+		}
+	}
+	if (!r.haveuniverse)
+		qt_fail(&r, "no universe record");
+	qt_close(&r);
+	meshpaths(name);
+	if (nflag && nelems == 0 && nleaflabels == 0)
+		warnat(name, 0, "-n: no element numbers in the stream "
+		    "(qtleaves adds them)");
+	if (Nflag && nverts == 0)
+		warnat(name, 0, "-N: no vertex records in the stream "
+		    "(qtleaves -n adds them)");
+	writesvg();
+	closeout();
+	return 0;
+}
