@@ -52,9 +52,15 @@ test: all tests/fmtcheck
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	bats tests
 
+# The report's case 1 through the whole pipeline: the README's gallery
+# (tests/gallery.bats fails when these files are stale) and the figures.
+GALLERY = samples/amoeba-4.svg samples/amoeba-6.svg samples/amoeba-8.svg
 demo: all
-	./polyread samples/amoeba.brep | ./qtsplit -l 6 | awk \
-	    '$$1 == "leaf" { n[$$9]++; t++ } END { printf "amoeba, level 6: %d leaves: %d F, %d E, %d P\n", t, n["F"], n["E"], n["P"] }'
+	for l in 4 6 8; do \
+	    ./polyread samples/amoeba.brep | ./qtsplit -l $$l | ./qt2svg \
+	    > samples/amoeba-$$l.svg || exit 1; done
+	@echo "wrote $(GALLERY)"
+	./polyread samples/amoeba.brep | ./qtsplit -l 8 | ./qtstats
 
 # The whole suite again with the address and undefined-behaviour
 # sanitizers; the sanitized programs are removed afterwards.

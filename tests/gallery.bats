@@ -1,0 +1,62 @@
+#!/usr/bin/env bats
+# The README's gallery and recipes: the SVG files in samples/ are what the
+# pipeline makes now, and each recipe prints what a second route computes.
+
+load test_helper
+
+@test "the gallery SVGs in samples/ are not stale (make demo remakes them)" {
+	for l in 4 6 8; do
+		polyread "$SAMPLES/amoeba.brep" | qtsplit -l $l | qt2svg > a.svg
+		cmp a.svg "$SAMPLES/amoeba-$l.svg" ||
+		    { echo "samples/amoeba-$l.svg is stale: run make demo"; return 1; }
+	done
+}
+
+@test "the README's figures are qtstats's" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 | qtstats > s.txt
+	sed -n '/^and its figures at level 8/,/^4060 leaves/p' "$TOP/README" |
+	    awk 'NF == 2 && $1 ~ /^[a-zA-Z_]+$/ { print $1, $2 }' > readme.txt
+	[ "$(wc -l < readme.txt)" -eq 10 ]
+	while read -r k v; do
+		grep -qx "$k $v" s.txt || { echo "README says $k $v"; return 1; }
+	done < readme.txt
+	# and the saving is the leaf count over 4^8, by hand
+	awk 'BEGIN { exit !(4060 / 65536 == 0.06195068359375) }'
+}
+
+@test "recipe: the area of the full leaves agrees with qtstats's exact sum" {
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 |
+	    awk '\''$1 == "leaf" && $9 == "F" { a += $8 * $8 } END { print a }'\'
+	awk -v a="$output" 'BEGIN { exit !(a + 0 > 64.0568 && a + 0 < 64.0570) }'
+}
+
+@test "recipe: the leaves of one subtree are those qtsplit -r writes" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 |
+	    awk '$1 == "leaf" && index($2, "03") == 1' > recipe
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 -r 03 | grep '^leaf' > sub
+	[ -s recipe ]
+	cmp recipe sub
+}
+
+@test "recipe: leaves per level match qtstats -l" {
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 |
+	    awk '\''$1 == "leaf" { n[$3]++ } END { for (l in n) print l, n[l] }'\'' | sort -n'
+	want=$(polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 | qtstats -l |
+	    awk '$1 == "level" && $5 > 0 { print $2, $5 }')
+	[ "$output" = "$want" ]
+	[ "${lines[${#lines[@]}-1]}" = "8 2764" ]
+}
+
+@test "recipe: one figure from qtstats, as awk sums it from the leaves" {
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 | qtstats |
+	    awk '\''$1 == "area_full" { print $2 }'\'
+	sum=$(polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 |
+	    awk '$1 == "leaf" && $9 == "F" { a += $8 * $8 } END { printf "%.17g", a }')
+	awk -v q="$output" -v a="$sum" 'BEGIN { d = q - a; if (d < 0) d = -d
+	    exit !(q != "" && d <= 1e-12 * a) }'
+}
+
+@test "make demo's pipeline leaves the README's mesh example as printed" {
+	run -0 bash -c "polyread '$SAMPLES/invl.brep' | qtsplit | qtleaves -n | grep -E '^(vertex|elem)' | head -4"
+	[ "$output" = "$(sed -n '/qtleaves -n | grep/,/^$/p' "$TOP/README" | sed '1d;$d' | sed 's/^    //')" ]
+}
