@@ -123,3 +123,21 @@ bad_case() {
 	printf '%s\n' "${lines[@]}" | timeout 120 qtsplit > c.qt
 	tail -n 1 c.qt | grep -q '^end '
 }
+
+@test "a filter that fails part-way writes no end record; the next one says so" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 10 > t.qt
+	# a leaf far down the stream gets a wrong x
+	awk 'NR == 20000 { $6 = 999 } { print }' t.qt > bad.qt
+	[ "$(awk 'NR == 20000 { print $1 }' bad.qt)" = leaf ]
+	run bash -c 'qtleaves bad.qt > part.qt 2> err1; echo $?'
+	[ "$output" = 1 ]
+	[[ "$(cat err1)" == "qtleaves: bad.qt:20000: cell "*" lies at "* ]]
+	# what was written before the fault is there, but not as a whole stream
+	[ "$(grep -c '^leaf' part.qt)" -gt 1000 ]
+	! grep -q '^end ' part.qt
+	run -1 --separate-stderr qtstats part.qt
+	[ "$stderr" = "qtstats: part.qt:$(wc -l < part.qt | tr -d ' '): truncated stream: no end record" ]
+	# and in one pipe, the last filter fails too
+	run bash -c 'qtleaves bad.qt 2>/dev/null | qtstats > /dev/null; echo "${PIPESTATUS[*]}"'
+	[ "$output" = "1 1" ]
+}
