@@ -138,6 +138,6 @@ bad_case() {
 	run -1 --separate-stderr qtstats part.qt
 	[ "$stderr" = "qtstats: part.qt:$(wc -l < part.qt | tr -d ' '): truncated stream: no end record" ]
 	# and in one pipe, the last filter fails too
-	run bash -c 'qtleaves bad.qt 2>/dev/null | qtstats > /dev/null; echo "${PIPESTATUS[*]}"'
+	run bash -c 'qtleaves bad.qt 2>/dev/null | qtstats > /dev/null 2>&1; echo "${PIPESTATUS[*]}"'
 	[ "$output" = "1 1" ]
 }
