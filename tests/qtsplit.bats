@@ -199,3 +199,12 @@ colour red 1.50' > u.qt
 		[[ "$output" == "end "* ]]
 	done
 }
+
+@test "-v reports cells, deepest level and seconds on stderr; silent without it" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	run -0 --separate-stderr qtsplit -l 8 a.qt
+	[ -z "$stderr" ]
+	run -0 --separate-stderr qtsplit -v -l 8 a.qt
+	n=$(printf '%s\n' "$output" | grep -cE '^(node|leaf)')
+	[[ "${stderr_lines[${#stderr_lines[@]}-1]}" =~ ^qtsplit:\ $n\ cells,\ deepest\ level\ 8,\ [0-9]+\ s$ ]]
+}
