@@ -206,6 +206,21 @@ children(int level, uint64_t ix, uint64_t iy, size_t n, int inside,
 		inx[1] = e->xmin < gx[2] && e->xmax > gx[1];
 		iny[0] = e->ymin < gy[1] && e->ymax > gy[0];
 		iny[1] = e->ymin < gy[2] && e->ymax > gy[1];
+		/*
+		 * Most edges, once cells are larger than they are, lie
+		 * strictly inside one child: they meet it and no other, and
+		 * cross none of the parity paths, which run along the
+		 * children's sides.
+		 */
+		if (inx[0] != inx[1] && iny[0] != iny[1]) {
+			int i = inx[1], j = iny[1];
+
+			if (e->xmin > gx[i] && e->xmax < gx[i + 1] &&
+			    e->ymin > gy[j] && e->ymax < gy[j + 1]) {
+				mask[k] = 1 << (2 * j + i);
+				continue;
+			}
+		}
 		for (q = 0; q < 4; q++) {
 			int i = q & 1, j = q >> 1, pos = 0, neg = 0, c;
 
@@ -362,6 +377,28 @@ rootlist(void)
 	return n;
 }
 
+struct text_buffer {
+	char	*s;
+	size_t	 len, cap;
+};
+
+/* Keeps a record's text, its fields joined again, newline-terminated. */
+static void
+keeptext(struct text_buffer *b, const struct qtrec *rec)
+{
+	size_t i;
+
+	if (b->len + rec->len + 2 > b->cap) {
+		b->cap = 2 * (b->len + rec->len + 2);
+		b->s = xreallocarray(b->s, b->cap, 1);
+	}
+	for (i = 0; i < rec->len; i++)
+		b->s[b->len + i] = rec->line[i] ? rec->line[i] : ' ';
+	b->len += rec->len;
+	b->s[b->len++] = '\n';
+	b->s[b->len] = '\0';
+}
+
 static void
 addring(struct point *v, size_t nv)
 {
@@ -385,8 +422,9 @@ main(int argc, char *argv[])
 	struct qtrec rec;
 	enum qtkind kind;
 	const char *end, *name, *subtree = NULL;
-	struct ring *rings = NULL, *ring;
-	size_t nrings = 0, vcap = 0, n;
+	struct text_buffer ringtext = { NULL, 0, 0 };
+	struct point *v = NULL;
+	size_t nv = 0, vcap = 0, n;
 	long long val;
 	uint64_t ix, iy;
 	int ch, streamlevel = -1, inside, level, i;
@@ -433,22 +471,18 @@ main(int argc, char *argv[])
 			streamlevel = rec.level;
 			break;
 		case QT_RING:
-			rings = xreallocarray(rings, nrings + 1,
-			    sizeof(*rings));
-			rings[nrings].id = rec.ringid;
-			rings[nrings].hole = rec.hole;
-			rings[nrings].n = 0;
-			rings[nrings++].v = NULL;
-			vcap = 0;
+			if (nv > 0)
+				addring(v, nv);
+			nv = 0;
+			keeptext(&ringtext, &rec);
 			break;
 		case QT_VERTEX:
-			ring = &rings[nrings - 1];
-			if (ring->n == vcap) {
+			if (nv == vcap) {
 				vcap = vcap ? 2 * vcap : 64;
-				ring->v = xreallocarray(ring->v, vcap,
-				    sizeof(*ring->v));
+				v = xreallocarray(v, vcap, sizeof(*v));
 			}
-			ring->v[ring->n++] = rec.v;
+			v[nv++] = rec.v;
+			keeptext(&ringtext, &rec);
 			break;
 		case QT_NODE:
 		case QT_LEAF:
@@ -464,8 +498,9 @@ main(int argc, char *argv[])
 	if (!r.haveuniverse)
 		qt_fail(&r, "no universe record");
 	qt_close(&r);
-	for (n = 0; n < nrings; n++)
-		addring(rings[n].v, rings[n].n);
+	if (nv > 0)
+		addring(v, nv);
+	free(v);
 	if (nedges > UINT32_MAX)
 		die(1, "too many edges: %zu", nedges);
 	if (maxlevel < 0)
@@ -483,11 +518,14 @@ main(int argc, char *argv[])
 	qt_header();
 	qt_universe(&u);
 	qt_level(maxlevel);
-	for (n = 0; n < nrings; n++) {
-		qt_ring(&rings[n]);
-		free(rings[n].v);
+	/* the rings as read: the reader checked them */
+	for (n = 0; n < ringtext.len; ) {
+		size_t eol = n + strcspn(ringtext.s + n, "\n");
+
+		qt_raw(ringtext.s + n, eol - n);
+		n = eol + 1;
 	}
-	free(rings);
+	free(ringtext.s);
 	for (n = 0; n < nkept; n++) {
 		qt_raw(kept[n], strlen(kept[n]));
 		free(kept[n]);
