@@ -104,6 +104,7 @@ struct qtreader {
 	long		 nrings;
 	int		 haveuniverse, havelevel, havecells;
 	struct universe	 u;
+	double		 cellsize[QT_MAXLEVEL + 1];
 	struct qtcoord	 coord[QT_MAXLEVEL + 1][3][2];	/* stream.c */
 };
 

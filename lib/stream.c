@@ -135,13 +135,19 @@ static int
 coordfield(struct qtreader *r, const char *text, int level, int axis,
     uint64_t i, double v, double *out)
 {
-	struct qtcoord *k = &r->coord[level][axis][i & 1];
+	struct qtcoord *k = &r->coord[level][axis][i & 1], *up;
 
 	if (!k->valid || k->i != i) {
 		k->i = i;
 		k->v = v;
-		fmtreal(k->text, v);
 		k->valid = 1;
+		/* column 2j at this level is column j a level up, bit for bit */
+		up = level > 0 && axis < 2 && !(i & 1) ?
+		    &r->coord[level - 1][axis][(i >> 1) & 1] : NULL;
+		if (up != NULL && up->valid && up->i == i >> 1)
+			memcpy(k->text, up->text, sizeof(k->text));
+		else
+			fmtreal(k->text, v);
 	}
 	if (strcmp(text, k->text) == 0) {
 		*out = v;
@@ -177,9 +183,9 @@ parsecell(struct qtreader *r, struct qtrec *rec)
 		qt_fail(r, "cell %s is at column %llu row %llu, not %s %s",
 		    c->path, (unsigned long long)ix, (unsigned long long)iy,
 		    rec->field[3], rec->field[4]);
-	x = cellcoord(r->u.x0, r->u.size, c->level, ix);
-	y = cellcoord(r->u.y0, r->u.size, c->level, iy);
-	size = ldexp(r->u.size, -c->level);
+	size = r->cellsize[c->level];
+	x = r->u.x0 + (double)ix * size;
+	y = r->u.y0 + (double)iy * size;
 	if (!coordfield(r, rec->field[5], c->level, 0, ix, x, &c->x) ||
 	    !coordfield(r, rec->field[6], c->level, 1, iy, y, &c->y) ||
 	    !coordfield(r, rec->field[7], c->level, 2, 0, size, &c->size)) {
@@ -283,6 +289,8 @@ body(struct qtreader *r, struct qtrec *rec)
 			qt_fail(r, "universe size is not positive");
 		r->u = rec->u;
 		r->haveuniverse = 1;
+		for (i = 0; i <= QT_MAXLEVEL; i++)
+			r->cellsize[i] = ldexp(r->u.size, -(int)i);
 		break;
 	case QT_LEVEL:
 		nfields(r, rec, 2, 2);
