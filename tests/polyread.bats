@@ -299,3 +299,35 @@ ring 3 outer 4" ]
 	run -0 bash -c 'polyread row.xy | grep -c "^ring .* outer 3$"'
 	[ "$output" = 3000 ]
 }
+
+@test "round trip: qtree rings back to brep read to the same stream" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	# counts, level, the outer ring, the hole, then the universe's corners
+	awk '$1 == "universe" { x0 = $2; y0 = $3; s = $4 }
+	    $1 == "level" { level = $2 }
+	    $1 == "ring" { r++; n[r] = $4; k = 0 }
+	    $1 == "v" { k++; v[r, k] = $2 " " $3 }
+	    END { print n[1], n[2], level
+		for (k = 1; k <= n[1]; k++) print v[1, k]
+		for (k = 1; k <= n[2]; k++) print v[2, k]
+		print x0, y0, x0 + s, y0, x0 + s, y0 + s, x0, y0 + s }' a.qt > back.brep
+	polyread back.brep > b.qt
+	diff -u a.qt b.qt
+}
+
+@test "round trip: qtree rings back to a Triangle .poly read to the same stream" {
+	polyread "$SAMPLES/ring.brep" > r.qt
+	awk '$1 == "v" { n++; x[n] = $2; y[n] = $3; ring[n] = r; first[r] = first[r] ? first[r] : n }
+	    $1 == "ring" { r++ }
+	    END { print n, 2, 0, 0
+		for (i = 1; i <= n; i++) print i, x[i], y[i]
+		print n, 0
+		for (i = 1; i <= n; i++) {
+			j = (i == n || ring[i + 1] != ring[i]) ? first[ring[i]] : i + 1
+			print i, i, j
+		}
+		print 0 }' r.qt > back.poly
+	polyread -u "$(awk '$1 == "universe" { print $2 "," $3 "," $4 }' r.qt)" \
+	    -l 6 back.poly > p.qt
+	diff -u r.qt p.qt
+}

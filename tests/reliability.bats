@@ -64,11 +64,14 @@ bad_case() {
 	[ "$output" = 10000000 ]
 }
 
-@test "output to a full disk is an error with a message" {
-	for cmd in "polyread $SAMPLES/amoeba.brep" "qtsplit -l 8 a.qt"; do
-		polyread "$SAMPLES/amoeba.brep" > a.qt
+@test "output to a full disk is an error with a message, from every program" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 8 a.qt > t.qt
+	for cmd in "polyread $SAMPLES/amoeba.brep" "qtsplit -l 8 a.qt" \
+	    "qtleaves t.qt" "qtleaves -n t.qt" "qtstats t.qt" "qt2svg t.qt"; do
 		run -1 --separate-stderr bash -c "$cmd > /dev/full"
-		[[ "$stderr" == *": write error: No space left on device" ]]
+		[[ "$stderr" == "${cmd%% *}: write error: No space left on device" ]] ||
+		    { echo "$cmd: $stderr"; return 1; }
 	done
 }
 
