@@ -213,7 +213,9 @@ parselong(const char *s, const char **end, long long *out)
 	while (*p >= '0' && *p <= '9') {
 		unsigned d = *p++ - '0';
 
-		if (v > ((unsigned long long)LLONG_MAX - d) / 10)
+		/* below LLONG_MAX / 10 no digit can overflow: skip the division */
+		if (v >= (unsigned long long)LLONG_MAX / 10 &&
+		    v > ((unsigned long long)LLONG_MAX - d) / 10)
 			return -2;
 		v = v * 10 + d;
 	}
@@ -231,21 +233,35 @@ coordok(double v)
 	return v == 0 || (a >= QT_COORD_MIN && a <= QT_COORD_MAX);
 }
 
+static const char digitpairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233"
+    "34353637383940414243444546474849505152535455565758596061626364656667"
+    "6869707172737475767778798081828384858687888990919293949596979899";
+
+/* Writes v in decimal, two digits a step; returns the terminating NUL. */
 char *
 fmtint(char *buf, long long v)
 {
-	char tmp[24], *t = tmp;
+	char tmp[24], *t = tmp + sizeof(tmp);
 	unsigned long long u = v < 0 ? -(unsigned long long)v : (unsigned long long)v;
+	size_t n;
 
-	do
-		*t++ = '0' + u % 10;
-	while ((u /= 10) != 0);
+	while (u >= 100) {
+		t -= 2;
+		memcpy(t, digitpairs + 2 * (u % 100), 2);
+		u /= 100;
+	}
+	if (u >= 10) {
+		t -= 2;
+		memcpy(t, digitpairs + 2 * u, 2);
+	} else
+		*--t = '0' + (char)u;
 	if (v < 0)
 		*buf++ = '-';
-	while (t > tmp)
-		*buf++ = *--t;
-	*buf = '\0';
-	return buf;
+	n = tmp + sizeof(tmp) - t;
+	memcpy(buf, t, n);
+	buf[n] = '\0';
+	return buf + n;
 }
 
 /* Opens an operand; "-" is standard input.  Reports failure and exits 1. */
