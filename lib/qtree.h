@@ -127,6 +127,8 @@ void	 qt_open(struct qtreader *, FILE *, const char *);
 enum qtkind qt_read(struct qtreader *, struct qtrec *);
 void	 qt_close(struct qtreader *);
 void	 qt_fail(struct qtreader *, const char *, ...);
+int	 qt_split(struct qtreader *, char *, char **, int);
+double	 qt_real(struct qtreader *, const char *, const char *);
 
 void	 qt_header(void);
 void	 qt_raw(const char *, size_t);

@@ -85,8 +85,9 @@ qt_fail(struct qtreader *r, const char *fmt, ...)
 	errat(r->name, r->lineno, "%s", msg);
 }
 
-static double
-realfield(struct qtreader *r, const char *s, const char *what)
+/* A real field of a record: a coordinate within the supported range. */
+double
+qt_real(struct qtreader *r, const char *s, const char *what)
 {
 	const char *end;
 	double v;
@@ -153,7 +154,7 @@ coordfield(struct qtreader *r, const char *text, int level, int axis,
 		*out = v;
 		return 1;
 	}
-	*out = realfield(r, text, axis == 0 ? "x" : axis == 1 ? "y" : "size");
+	*out = qt_real(r, text, axis == 0 ? "x" : axis == 1 ? "y" : "size");
 	return *out == v;
 }
 
@@ -218,26 +219,28 @@ static const struct {
 	{ "universe", 8, QT_UNIVERSE },
 };
 
-/* Splits the line at single spaces; refuses empty fields. */
-static void
-splitfields(struct qtreader *r, struct qtrec *rec)
+/*
+ * Splits a record at single spaces into at most max fields, refusing
+ * empty ones; for the records the reader does not know, the same rule.
+ */
+int
+qt_split(struct qtreader *r, char *line, char **field, int max)
 {
-	char *p = rec->line;
-	int n = 0;
+	int n = 0, i;
 
 	for (;;) {
-		if (n == (int)(sizeof(rec->field) / sizeof(rec->field[0])))
+		if (n == max)
 			qt_fail(r, "too many fields");
-		rec->field[n++] = p;
-		if ((p = strchr(p, ' ')) == NULL)
+		field[n++] = line;
+		if ((line = strchr(line, ' ')) == NULL)
 			break;
-		*p++ = '\0';
+		*line++ = '\0';
 	}
-	rec->nfield = n;
-	while (n-- > 0)
-		if (rec->field[n][0] == '\0')
+	for (i = 0; i < n; i++)
+		if (field[i][0] == '\0')
 			qt_fail(r, "empty field (fields are separated by one "
 			    "space)");
+	return n;
 }
 
 static enum qtkind
@@ -274,7 +277,8 @@ body(struct qtreader *r, struct qtrec *rec)
 	r->count++;
 	if (rec->kind == QT_OTHER)
 		return QT_OTHER;
-	splitfields(r, rec);
+	rec->nfield = qt_split(r, rec->line, rec->field,
+	    (int)(sizeof(rec->field) / sizeof(rec->field[0])));
 	switch (rec->kind) {
 	case QT_UNIVERSE:
 		nfields(r, rec, 4, 4);
@@ -282,9 +286,9 @@ body(struct qtreader *r, struct qtrec *rec)
 			qt_fail(r, "second universe record");
 		if (r->nrings > 0 || r->havecells)
 			qt_fail(r, "universe record after rings or cells");
-		rec->u.x0 = realfield(r, rec->field[1], "x0");
-		rec->u.y0 = realfield(r, rec->field[2], "y0");
-		rec->u.size = realfield(r, rec->field[3], "size");
+		rec->u.x0 = qt_real(r, rec->field[1], "x0");
+		rec->u.y0 = qt_real(r, rec->field[2], "y0");
+		rec->u.size = qt_real(r, rec->field[3], "size");
 		if (rec->u.size <= 0)
 			qt_fail(r, "universe size is not positive");
 		r->u = rec->u;
@@ -329,8 +333,8 @@ body(struct qtreader *r, struct qtrec *rec)
 		nfields(r, rec, 3, 3);
 		if (r->vleft == 0)
 			qt_fail(r, "v record outside a ring");
-		rec->v.x = realfield(r, rec->field[1], "x");
-		rec->v.y = realfield(r, rec->field[2], "y");
+		rec->v.x = qt_real(r, rec->field[1], "x");
+		rec->v.y = qt_real(r, rec->field[2], "y");
 		r->vleft--;
 		break;
 	case QT_NODE:

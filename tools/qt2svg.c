@@ -224,23 +224,6 @@ positiveid(struct qtreader *r, const char *s, const char *what)
 	return v;
 }
 
-static double
-coordinate(struct qtreader *r, const char *s, const char *what)
-{
-	const char *end;
-	double v;
-	int rc = parsereal(s, &end, &v);
-
-	if (rc == -2)
-		qt_fail(r, "%s out of range: %s", what, s);
-	if (rc < 0 || *end != '\0')
-		qt_fail(r, "%s is not a number: %s", what, s);
-	if (!coordok(v))
-		qt_fail(r, "%s outside the supported range "
-		    "(0 or 1e-100 to 1e100 in magnitude): %s", what, s);
-	return v;
-}
-
 static void
 leaf(struct qtreader *r, const struct qtrec *rec)
 {
@@ -330,27 +313,6 @@ ringvertex(struct point v)
 		ringto(ringfirstx, ringfirsty);
 }
 
-/* Splits an unknown record at single spaces, as the reader does. */
-static int
-split(struct qtreader *r, char *line, char **field, int max)
-{
-	int n = 0, i;
-
-	for (;;) {
-		if (n == max)
-			qt_fail(r, "too many fields");
-		field[n++] = line;
-		if ((line = strchr(line, ' ')) == NULL)
-			break;
-		*line++ = '\0';
-	}
-	for (i = 0; i < n; i++)
-		if (field[i][0] == '\0')
-			qt_fail(r, "empty field (fields are separated by one "
-			    "space)");
-	return n;
-}
-
 static void
 meshvertex(struct qtreader *r, char **field, int n)
 {
@@ -369,8 +331,8 @@ meshvertex(struct qtreader *r, char **field, int n)
 	v = &verts[nverts++];
 	v->id = positiveid(r, field[1], "vertex id");
 	v->line = r->lineno;
-	x = coordinate(r, field[2], "x");
-	y = coordinate(r, field[3], "y");
+	x = qt_real(r, field[2], "x");
+	y = qt_real(r, field[3], "y");
 	if (x < u.x0 || x - u.x0 > u.size || y < u.y0 || y - u.y0 > u.size)
 		qt_fail(r, "vertex %s lies outside the universe", field[1]);
 	v->x = pixelx(x);
@@ -437,10 +399,10 @@ other(struct qtreader *r, struct qtrec *rec)
 	int n;
 
 	if (strncmp(rec->line, "vertex ", 7) == 0) {
-		n = split(r, rec->line, field, 64);
+		n = qt_split(r, rec->line, field, 64);
 		meshvertex(r, field, n);
 	} else if (strncmp(rec->line, "elem ", 5) == 0) {
-		n = split(r, rec->line, field, 64);
+		n = qt_split(r, rec->line, field, 64);
 		meshelem(r, field, n);
 	}
 	/* Other records are for other programs. */

@@ -163,27 +163,6 @@ addcell(const struct cell *c)
 	    (uint64_t)c->level << LEVELSHIFT;
 }
 
-/* Splits a record at single spaces, as the reader does for known ones. */
-static int
-fields(struct qtreader *r, char *line, char **f, int max)
-{
-	int i, n = 0;
-
-	for (;;) {
-		if (n == max)
-			qt_fail(r, "%s record has too many fields", f[0]);
-		f[n++] = line;
-		if ((line = strchr(line, ' ')) == NULL)
-			break;
-		*line++ = '\0';
-	}
-	for (i = 0; i < n; i++)
-		if (f[i][0] == '\0')
-			qt_fail(r, "empty field (fields are separated by one "
-			    "space)");
-	return n;
-}
-
 static unsigned long long
 number(struct qtreader *r, const char *s, const char *what,
     unsigned long long hi)
@@ -216,7 +195,7 @@ vertexrec(struct qtreader *r, char *line)
 {
 	char *f[5];
 
-	if (fields(r, line, f, 5) != 4)
+	if (qt_split(r, line, f, 5) != 4)
 		qt_fail(r, "vertex record needs 4 fields: vertex ID X Y");
 	if (number(r, f[1], "vertex ID", UINT32_MAX) != nverts + 1)
 		qt_fail(r, "vertex %s follows vertex %zu", f[1], nverts);
@@ -251,7 +230,7 @@ static void
 elemrec(struct qtreader *r, char *line)
 {
 	char *f[64];
-	int n = fields(r, line, f, 64), k;
+	int n = qt_split(r, line, f, 64), k;
 	size_t t;
 
 	if (n < 6)
