@@ -236,6 +236,77 @@ ring 3 outer 4" ]
 	[[ "$stderr" == "polyread: cut.wkt:1: interior is disconnected"* ]]
 }
 
+@test "a jagged star, its edges long next to their spacing, is checked and valid" {
+	# genpoly's stars are simple by construction: one vertex per angle, in
+	# order, all outside the square hole
+	awk -v shape=star -v n=20000 -v m=0 -f "$TOP/tools/genpoly.awk" > jag.xy
+	run -0 bash -c 'polyread jag.xy | grep "^ring"'
+	[ "$output" = "ring 1 outer 20000
+ring 2 hole 4" ]
+}
+
+@test "vertical edges may meet end to end, but not overlap" {
+	# squares corner to corner: x = 1 holds 0..1 of one and 1..2 of the other
+	printf '0 0\n1 0\n1 1\n0 1\n\n1 1\n2 1\n2 2\n1 2\n' > meet.xy
+	run -0 bash -c 'polyread meet.xy | grep "^ring"'
+	[ "$output" = "ring 1 outer 4
+ring 2 outer 4" ]
+	# 0..2 and 1..3 on x = 1 share 1..2, which starts at 1 1
+	printf '0 0\n1 0\n1 2\n0 2\n\n1 1\n2 1\n2 3\n1 3\n' > share.xy
+	run -1 --separate-stderr polyread share.xy
+	[ "$stderr" = "polyread: share.xy:2: ring 1 edge 2 (line 2) overlaps ring 2 edge 4 (line 9) at 1 1" ] ||
+	    [ "$stderr" = "polyread: share.xy:9: ring 2 edge 4 (line 9) overlaps ring 1 edge 2 (line 2) at 1 1" ]
+}
+
+@test "three polygons meeting at one point, edges vertical into and out of it, are valid" {
+	# sectors around 0 0: -27 to 27 degrees, 90 to 117, -90 to -63
+	printf '0 0\n2 -1\n2 1\n\n0 0\n-1 2\n0 2\n\n0 0\n0 -2\n1 -2\n' > fan.xy
+	run -0 bash -c 'polyread fan.xy | grep "^ring"'
+	[ "$output" = "ring 1 outer 3
+ring 2 outer 3
+ring 3 outer 3" ]
+}
+
+@test "a shell and two holes meeting at one point inside the shell's side are valid" {
+	# both holes have a vertex at 2 0, inside the edge 0 0 - 4 0: one node
+	# joins the three rings, which makes no loop
+	printf '0 0\n4 0\n4 4\n0 4\n\n2 0\n3 1\n3 2\n\n2 0\n1 2\n1 1\n' > three.xy
+	run -0 bash -c 'polyread three.xy | grep "^ring"'
+	[ "$output" = "ring 1 outer 4
+ring 2 hole 3
+ring 3 hole 3" ]
+}
+
+@test "holes touching a vertical side and each other close a loop" {
+	# the holes touch the side x = 4 at 4 1 and 4 3, and each other at 3 2,
+	# cutting off the triangle 4 1, 3 2, 4 3; the links sorted by point meet
+	# the loop at the last, ring 3 at 4 3
+	printf '0 0\n4 0\n4 4\n0 4\n\n4 1\n3 2\n2 1\n\n4 3\n2 3\n3 2\n' > loop.xy
+	run -1 --separate-stderr polyread loop.xy
+	[ "$stderr" = "polyread: loop.xy:10: interior is disconnected: ring 3 touches the rings around it at 4 3 and elsewhere, closing a loop" ]
+}
+
+@test "a ring's vertex inside its own edge is a touch, and an error" {
+	# the notch from the top reaches down to 2 0, on edge 1; edges 4 and 5
+	# end there
+	printf '0 0\n4 0\n4 4\n3 4\n2 0\n1 4\n0 4\n' > notch.xy
+	run -1 --separate-stderr polyread notch.xy
+	case $stderr in
+	"polyread: notch.xy:1: ring 1 edge 1 (line 1) touches ring 1 edge "[45]" (line "[45]") at 2 0") ;;
+	"polyread: notch.xy:"[45]": ring 1 edge "[45]" (line "[45]") touches ring 1 edge 1 (line 1) at 2 0") ;;
+	*) false ;;
+	esac
+}
+
+@test "a crossing away from any vertex is found once its edges are neighbours" {
+	# edges 1 (0 0 - 10 10) and 3 (1 9 - 10 0) cross at 5 5; until x = 2
+	# ring 2's triangle lies between them
+	printf '0 0\n10 10\n10 0\n1 9\n\n0.5 4\n2 3\n2 5\n' > apart.xy
+	run -1 --separate-stderr polyread apart.xy
+	[ "$stderr" = "polyread: apart.xy:1: ring 1 edge 1 (line 1) crosses ring 1 edge 3 (line 3) at 5 5" ] ||
+	    [ "$stderr" = "polyread: apart.xy:3: ring 1 edge 3 (line 3) crosses ring 1 edge 1 (line 1) at 5 5" ]
+}
+
 @test "the message names the file and line of the offending vertex" {
 	printf '# header\n\n0 0\n4 0\n4 4\n0 4\n0 0\n2 -1\n' > late.xy
 	run -1 --separate-stderr polyread late.xy

@@ -727,11 +727,22 @@ checkring(struct inring *r)
 	}
 }
 
-/* Crossings: edges bucketed by a recursive split of the plane. */
+/*
+ * Crossings: a sweep over the vertices in (x, y) order keeps the edges that
+ * the sweep line cuts in a treap, from bottom to top, placed by exact
+ * orientation against the vertex at hand.  Only edges that meet at a vertex
+ * or are neighbours on the sweep line are tested, so the cost does not grow
+ * with how long the edges are next to their spacing.
+ */
+#define NONE	((size_t)-1)
+
 struct edge {
-	double	xmin, ymin, xmax, ymax;
-	long	ring;
-	size_t	i;
+	double		 xmin, ymin, xmax, ymax;
+	long		 ring;
+	size_t		 i;
+	size_t		 kid[2];	/* treap children, or NONE */
+	uint32_t	 pri;		/* treap heap key */
+	int		 rises;		/* the sweep meets its lower end first */
 };
 
 struct touch {
@@ -830,99 +841,269 @@ testpair(const struct edge *e, const struct edge *f)
 	addtouch(e->ring, f->ring, p);
 }
 
+/* The order of the sweep's events: by x, then by y. */
+static int
+before(struct point a, struct point b)
+{
+	return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
+static int
+samepoint(struct point a, struct point b)
+{
+	return a.x == b.x && a.y == b.y;
+}
+
 /*
- * Whether the edge meets the closed box: the boxes overlap and the box's
- * corners are not all strictly on one side of the edge.  A segment that
- * merely has its bounding box over the box is left out, or long slanted
- * edges would crowd every bucket they pass near.
+ * The end the sweep reaches first (last = 0) or last (last = 1), from the
+ * bounding box, which the sweep reads far more often than the ring.
+ */
+static struct point
+sweepend(const struct edge *e, int last)
+{
+	struct point p;
+
+	p.x = last ? e->xmax : e->xmin;
+	p.y = last == e->rises ? e->ymax : e->ymin;
+	return p;
+}
+
+/*
+ * Where p lies against an edge that the sweep line cuts while it passes p:
+ * > 0 above, < 0 below, 0 on it.  A vertical edge is cut only while the
+ * sweep runs up its own x, and then only between its ends, so p is on it.
+ * An edge that ends at p is on it too, and saying so at once spares the
+ * exact arithmetic that the orientation of a collinear triple costs.
  */
 static int
-meetsbox(const struct edge *e, const double *box)
+side(const struct edge *t, struct point p)
 {
-	struct point a, b;
-	int c, pos = 0, neg = 0;
+	struct point a = sweepend(t, 0), b = sweepend(t, 1);
 
-	if (e->xmax < box[0] || e->xmin > box[2] || e->ymax < box[1] ||
-	    e->ymin > box[3])
+	if (a.x == b.x || samepoint(b, p))
 		return 0;
-	if (e->xmin >= box[0] && e->xmax <= box[2] && e->ymin >= box[1] &&
-	    e->ymax <= box[3])
-		return 1;
-	a = ep(e, 0);
-	b = ep(e, 1);
-	for (c = 0; c < 4; c++) {
-		int o = orient2d(a.x, a.y, b.x, b.y, box[c & 1 ? 2 : 0],
-		    box[c & 2 ? 3 : 1]);
-
-		pos |= o >= 0;
-		neg |= o <= 0;
-	}
-	return pos && neg;
-}
-
-static int
-cmpxmin(const void *a, const void *b)
-{
-	double s = edges[*(const size_t *)a].xmin;
-	double t = edges[*(const size_t *)b].xmin;
-
-	return (s > t) - (s < t);
-}
-
-/* Tests the pairs of a bucket, sorted by xmin so that a sweep skips most. */
-static void
-testbucket(size_t *list, size_t n)
-{
-	size_t i, j;
-
-	qsort(list, n, sizeof(*list), cmpxmin);
-	for (i = 0; i < n; i++) {
-		const struct edge *e = &edges[list[i]];
-
-		for (j = i + 1; j < n && edges[list[j]].xmin <= e->xmax; j++)
-			testpair(e, &edges[list[j]]);
-	}
+	return orient2d(a.x, a.y, b.x, b.y, p.x, p.y);
 }
 
 /*
- * Halves the box until few edges remain, so that only the edges that cross
- * a cut are tested twice: across the longer side, else across the other
- * when every edge crosses the first cut.  When every edge crosses both,
- * cutting cannot help and the bucket is tested whole.
+ * Treap priorities: the edge's number scrambled by a bijective hash, so
+ * that the treap stays shallow whatever order the edges come in.
+ */
+static uint32_t
+scramble(uint32_t x)
+{
+	x ^= x >> 16;
+	x *= 0x85ebca6bU;
+	x ^= x >> 13;
+	x *= 0xc2b2ae35U;
+	x ^= x >> 16;
+	return x;
+}
+
+/*
+ * Splits a treap into the edges with side(t, p) >= lim and the rest.  Up
+ * the sweep line come the edges below p, then those through p, then those
+ * above, so that two splits cut out the edges through p.
  */
 static void
-crossings(size_t *list, size_t n, const double *box, int depth)
+split(size_t t, struct point p, int lim, size_t *lo, size_t *hi)
 {
-	size_t i, *sub[2], k[2];
-	double half[2][4], mid;
-	int side, axis, tries;
+	if (t == NONE)
+		*lo = *hi = NONE;
+	else if (side(&edges[t], p) >= lim) {
+		*lo = t;
+		split(edges[t].kid[1], p, lim, &edges[t].kid[1], hi);
+	} else {
+		*hi = t;
+		split(edges[t].kid[0], p, lim, lo, &edges[t].kid[0]);
+	}
+}
 
-	if (n <= 16 || depth >= 64) {
-		testbucket(list, n);
+/* Joins two treaps, every edge of lo being below every edge of hi. */
+static size_t
+merge(size_t lo, size_t hi)
+{
+	if (lo == NONE)
+		return hi;
+	if (hi == NONE)
+		return lo;
+	if (edges[lo].pri > edges[hi].pri) {
+		edges[lo].kid[1] = merge(edges[lo].kid[1], hi);
+		return lo;
+	}
+	edges[hi].kid[0] = merge(lo, edges[hi].kid[0]);
+	return hi;
+}
+
+/* The lowest (dir = 0) or highest (dir = 1) edge of a treap. */
+static size_t
+outermost(size_t t, int dir)
+{
+	if (t != NONE)
+		while (edges[t].kid[dir] != NONE)
+			t = edges[t].kid[dir];
+	return t;
+}
+
+static size_t *here;		/* the edges that hold the vertex at hand */
+static size_t nhere, herecap;
+
+static void
+addhere(size_t k)
+{
+	if (nhere == herecap) {
+		herecap = herecap ? 2 * herecap : 64;
+		here = xreallocarray(here, herecap, sizeof(*here));
+	}
+	here[nhere++] = k;
+}
+
+static void
+collect(size_t t)
+{
+	if (t == NONE)
 		return;
-	}
-	sub[0] = xreallocarray(NULL, n, sizeof(*sub[0]));
-	sub[1] = xreallocarray(NULL, n, sizeof(*sub[1]));
-	axis = box[2] - box[0] >= box[3] - box[1] ? 0 : 1;
-	for (tries = 0; tries < 2; tries++, axis = !axis) {
-		mid = box[axis] + (box[axis + 2] - box[axis]) / 2;
-		for (side = 0; side < 2; side++) {
-			memcpy(half[side], box, sizeof(half[side]));
-			half[side][side ? axis : axis + 2] = mid;
-			for (i = k[side] = 0; i < n; i++)
-				if (meetsbox(&edges[list[i]], half[side]))
-					sub[side][k[side]++] = list[i];
+	collect(edges[t].kid[0]);
+	addhere(t);
+	collect(edges[t].kid[1]);
+}
+
+/*
+ * Orders edges that go on from p, bottom to top just past p: by the turn
+ * from one's far end to the other's, exact, and right for every direction
+ * the sweep allows (rightward, or straight up, which comes last).
+ */
+static void
+sortfrom(size_t *list, size_t n, struct point p)
+{
+	size_t i, j, k;
+
+	for (i = 1; i < n; i++) {
+		struct point b;
+
+		k = list[i];
+		b = sweepend(&edges[k], 1);
+		for (j = i; j > 0; j--) {
+			struct point a = sweepend(&edges[list[j - 1]], 1);
+
+			if (orient2d(p.x, p.y, a.x, a.y, b.x, b.y) >= 0)
+				break;
+			list[j] = list[j - 1];
 		}
-		if (k[0] < n || k[1] < n)
-			break;
+		list[j] = k;
 	}
-	if (tries == 2)
-		testbucket(list, n);
-	else
-		for (side = 0; side < 2; side++)
-			crossings(sub[side], k[side], half[side], depth + 1);
-	free(sub[0]);
-	free(sub[1]);
+}
+
+static void
+testneighbours(size_t lo, size_t hi)
+{
+	if (lo != NONE && hi != NONE)
+		testpair(&edges[lo], &edges[hi]);
+}
+
+/*
+ * Passes the vertex p.  Every edge that holds p (ending there, passing
+ * through or leaving it) is tested against every other, bottom to top in
+ * each group, which records every touch at p and finds every overlap that
+ * starts there.  Then the edges that leave p take the place of those that
+ * end there, and the edges that become neighbours are tested: two edges
+ * that cross away from any vertex are neighbours before the sweep gets
+ * there (Shamos and Hoey), as long as nothing crossed before, which the
+ * tests so far have made sure of.
+ */
+static size_t
+sweepvertex(size_t root, struct point p, size_t *leave, size_t nleave)
+{
+	size_t below, rest, mid, above, i, j, n;
+
+	split(root, p, 1, &below, &rest);
+	split(rest, p, 0, &mid, &above);
+	nhere = 0;
+	collect(mid);
+	sortfrom(leave, nleave, p);
+	for (i = 0; i < nleave; i++)
+		addhere(leave[i]);
+	for (i = 0; i < nhere; i++)
+		for (j = i + 1; j < nhere; j++)
+			testpair(&edges[here[i]], &edges[here[j]]);
+	/*
+	 * What goes on past p: the edges that leave it, and at most one that
+	 * passes through, as two would have crossed or overlapped.
+	 */
+	for (i = n = 0; i < nhere; i++)
+		if (!samepoint(sweepend(&edges[here[i]], 1), p))
+			here[n++] = here[i];
+	sortfrom(here, n, p);
+	if (n == 0)
+		testneighbours(outermost(below, 1), outermost(above, 0));
+	else {
+		testneighbours(outermost(below, 1), here[0]);
+		testneighbours(here[n - 1], outermost(above, 0));
+	}
+	mid = NONE;
+	for (i = 0; i < n; i++) {
+		edges[here[i]].kid[0] = edges[here[i]].kid[1] = NONE;
+		mid = merge(mid, here[i]);
+	}
+	return merge(merge(below, mid), above);
+}
+
+/* A vertex: p, and k the edge from it to the next vertex of its ring. */
+struct event {
+	struct point	p;
+	size_t		k;
+};
+
+static int
+cmpevent(const void *a, const void *b)
+{
+	const struct event *s = a, *t = b;
+
+	if (s->p.x != t->p.x)
+		return s->p.x < t->p.x ? -1 : 1;
+	if (s->p.y != t->p.y)
+		return s->p.y < t->p.y ? -1 : 1;
+	/* in ring order when they coincide, so that messages do not vary */
+	return (s->k > t->k) - (s->k < t->k);
+}
+
+/* Vertices that coincide, of one ring or several, make one event. */
+static void
+sweep(size_t n)
+{
+	struct event *ev = xreallocarray(NULL, n, sizeof(*ev));
+	size_t *leave = NULL, cap = 0, i, g, root = NONE;
+
+	for (i = 0; i < n; i++) {
+		ev[i].p = ep(&edges[i], 0);
+		ev[i].k = i;
+	}
+	qsort(ev, n, sizeof(*ev), cmpevent);
+	for (i = 0; i < n; i = g) {
+		size_t nleave = 0;
+
+		for (g = i; g < n && samepoint(ev[g].p, ev[i].p); g++) {
+			size_t k = ev[g].k, prev = edges[k].i > 0 ? k - 1 :
+			    k + rings[edges[k].ring].n - 1;
+
+			if (nleave + 2 > cap) {
+				cap = cap ? 2 * cap : 16;
+				leave = xreallocarray(leave, cap,
+				    sizeof(*leave));
+			}
+			/* those that end at p are in the treap already */
+			if (before(ev[i].p, ep(&edges[k], 1)))
+				leave[nleave++] = k;
+			if (before(ev[i].p, ep(&edges[prev], 0)))
+				leave[nleave++] = prev;
+		}
+		root = sweepvertex(root, ev[i].p, leave, nleave);
+	}
+	free(leave);
+	free(ev);
+	free(here);
+	here = NULL;
+	nhere = herecap = 0;
 }
 
 static long *uf;
@@ -1042,8 +1223,18 @@ static void
 buildstrips(const struct inring *r, struct strips *st)
 {
 	size_t i, j, *fill;
+	double sum = 0, lim;
 
+	/*
+	 * An edge is filed under every strip it spans: with long edges (a
+	 * zigzag) fewer strips keep that to about 5 entries per edge.
+	 */
+	for (i = 0; i < r->n; i++)
+		sum += fabs(r->v[(i + 1) % r->n].y - r->v[i].y);
+	lim = 4.0 * r->n * (r->ymax - r->ymin) / sum;
 	st->k = r->n / 8;
+	if (lim < st->k)
+		st->k = lim < 1 ? 1 : (size_t)lim;
 	st->ymin = r->ymin;
 	st->height = (r->ymax - r->ymin) / st->k;
 	st->start = xreallocarray(NULL, st->k + 1, sizeof(*st->start));
@@ -1210,13 +1401,11 @@ checkroles(void)
 static void
 checkedges(void)
 {
-	size_t i, j, n = 0, *list;
-	double box[4];
+	size_t i, j, n = 0;
 
 	for (i = 0; i < nrings; i++)
 		n += rings[i].n;
 	edges = xreallocarray(NULL, n, sizeof(*edges));
-	list = xreallocarray(NULL, n, sizeof(*list));
 	n = 0;
 	for (i = 0; i < nrings; i++)
 		for (j = 0; j < rings[i].n; j++) {
@@ -1231,20 +1420,12 @@ checkedges(void)
 			e->xmax = fmax(a.x, b.x);
 			e->ymin = fmin(a.y, b.y);
 			e->ymax = fmax(a.y, b.y);
-			if (n == 0) {
-				box[0] = e->xmin, box[1] = e->ymin;
-				box[2] = e->xmax, box[3] = e->ymax;
-			}
-			box[0] = fmin(box[0], e->xmin);
-			box[1] = fmin(box[1], e->ymin);
-			box[2] = fmax(box[2], e->xmax);
-			box[3] = fmax(box[3], e->ymax);
-			list[n] = n;
+			e->kid[0] = e->kid[1] = NONE;
+			e->pri = scramble(n);
+			e->rises = before(a, b) ? a.y <= b.y : b.y <= a.y;
 			n++;
 		}
-	if (n > 0)
-		crossings(list, n, box, 0);
-	free(list);
+	sweep(n);
 	free(edges);
 }
 
