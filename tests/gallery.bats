@@ -60,3 +60,12 @@ load test_helper
 	run -0 bash -c "polyread '$SAMPLES/invl.brep' | qtsplit | qtleaves -n | grep -E '^(vertex|elem)' | head -4"
 	[ "$output" = "$(sed -n '/qtleaves -n | grep/,/^$/p' "$TOP/README" | sed '1d;$d' | sed 's/^    //')" ]
 }
+
+@test "the README's polyread and qtsplit examples print what it shows" {
+	run -0 bash -c "printf '0 0\n2 0\n0 2\n' | polyread -l 1"
+	[ "$output" = "$(sed -n "/^    \\\$ printf '0 0.n2 0.n0 2.n' | polyread -l 1\$/,/^\$/p" "$TOP/README" | sed '1d;$d' | sed 's/^    //')" ]
+	# six records between the header and end: universe, level, ring, 3 v
+	[ "${lines[7]}" = "end 6" ]
+	run -0 bash -c "printf '0 0\n2 0\n0 2\n' | polyread -l 1 | qtsplit | grep -E '^(node|leaf)'"
+	[ "$output" = "$(sed -n '/qtsplit | grep -E/,/^$/p' "$TOP/README" | sed '1d;$d' | sed 's/^    //')" ]
+}
