@@ -106,7 +106,7 @@ orient2d(double ax, double ay, double bx, double by, double cx, double cy)
  * infinitesimal e > 0: orient(a, b, c) unless c is on the line, then the
  * side of d, since orient is affine in its third point.
  */
-int
+static int
 side_nudged(struct point a, struct point b, struct point c, struct point d)
 {
 	int s = orient2d(a.x, a.y, b.x, b.y, c.x, c.y);

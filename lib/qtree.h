@@ -47,7 +47,6 @@ struct point {
 void	 two_sum(double, double, double *, double *);
 void	 two_product(double, double, double *, double *);
 int	 orient2d(double, double, double, double, double, double);
-int	 side_nudged(struct point, struct point, struct point, struct point);
 int	 ray_crosses(struct point, struct point, struct point, struct point);
 int	 ring_contains(const struct point *, size_t, struct point,
 	    struct point);
@@ -135,16 +134,13 @@ void	 qt_raw(const char *, size_t);
 void	 qt_universe(const struct universe *);
 void	 qt_level(int);
 void	 qt_ring(const struct ring *);
-void	 qt_cell(const struct cell *);
 char	*qt_record(size_t);
 void	 qt_recorded(const char *);
 void	 qt_end(void);
 void	 qt_put(const char *, size_t);
-unsigned long long qt_written(void);
 
 double	 cellcoord(double, double, int, uint64_t);
 int	 pathcell(const char *, int, uint64_t *, uint64_t *);
-void	 cellpath(char *, int, uint64_t, uint64_t);
 
 /*
  * area.c (qtstats): exact sums of products.  An xsum is a floating-point

@@ -40,23 +40,6 @@ pathcell(const char *path, int level, uint64_t *ix, uint64_t *iy)
 }
 
 void
-cellpath(char *buf, int level, uint64_t ix, uint64_t iy)
-{
-	int i;
-
-	if (level == 0) {
-		strcpy(buf, ".");
-		return;
-	}
-	for (i = 0; i < level; i++) {
-		int shift = level - 1 - i;
-
-		buf[i] = '0' + (int)((ix >> shift & 1) | (iy >> shift & 1) << 1);
-	}
-	buf[level] = '\0';
-}
-
-void
 qt_open(struct qtreader *r, FILE *fp, const char *name)
 {
 	memset(r, 0, sizeof(*r));
@@ -433,12 +416,6 @@ putstr(const char *s)
 	qt_put(s, strlen(s));
 }
 
-unsigned long long
-qt_written(void)
-{
-	return written;
-}
-
 void
 qt_header(void)
 {
@@ -500,43 +477,6 @@ qt_ring(const struct ring *ring)
 		qt_put(line, p - line);
 	}
 	written += 1 + ring->n;
-}
-
-void
-qt_cell(const struct cell *c)
-{
-	char line[256], *p = line;
-	size_t n;
-
-	if (c->class) {
-		memcpy(p, "leaf ", 5);
-		p += 5;
-	} else {
-		memcpy(p, "node ", 5);
-		p += 5;
-	}
-	n = strlen(c->path);
-	memcpy(p, c->path, n);
-	p += n;
-	*p++ = ' ';
-	p = fmtint(p, c->level);
-	*p++ = ' ';
-	p = fmtint(p, (long long)c->ix);
-	*p++ = ' ';
-	p = fmtint(p, (long long)c->iy);
-	*p++ = ' ';
-	p = fmtreal(p, c->x);
-	*p++ = ' ';
-	p = fmtreal(p, c->y);
-	*p++ = ' ';
-	p = fmtreal(p, c->size);
-	if (c->class) {
-		*p++ = ' ';
-		*p++ = c->class;
-	}
-	*p++ = '\n';
-	qt_put(line, p - line);
-	written++;
 }
 
 /*
