@@ -82,12 +82,14 @@ struct qtrec {
 	size_t		 nvert;		/* QT_RING */
 	struct point	 v;	/* QT_VERTEX */
 	struct cell	 c;	/* QT_NODE, QT_LEAF */
+	int		 canon;	/* spelled as the toolkit's writers spell it */
 };
 
 struct qtcoord {
 	int		 valid;
 	uint64_t	 i;
 	double		 v;
+	size_t		 len;
 	char		 text[32];
 };
 
@@ -96,7 +98,8 @@ struct qtreader {
 	const char	*name;
 	long		 lineno;
 	char		*buf;
-	size_t		 cap;
+	size_t		 cap, pos, end;	/* unread input: buf[pos..end-1] */
+	int		 eof;
 	int		 state;
 	unsigned long long count;
 	size_t		 vleft;

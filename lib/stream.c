@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "qtree.h"
 
@@ -45,6 +46,8 @@ qt_open(struct qtreader *r, FILE *fp, const char *name)
 	memset(r, 0, sizeof(*r));
 	r->fp = fp;
 	r->name = name;
+	r->cap = 1 << 18;
+	r->buf = xmalloc(r->cap);
 }
 
 void
@@ -109,30 +112,38 @@ nfields(struct qtreader *r, struct qtrec *rec, int lo, int hi)
 }
 
 /*
- * Reads a cell's x, y or size, which must be the value v.  Writers print
- * the shortest text, so the field is first compared with the text of v,
- * kept per level, axis and column parity (siblings share columns and
- * rows); only another spelling of the number needs parsing.  Returns
- * whether the field is v.
+ * The text of a cell's x, y or size, the value v, kept per level, axis and
+ * column parity (siblings share columns and rows): writers print the
+ * shortest text, so a field is compared with it before any parsing.
  */
+static const struct qtcoord *
+coordtext(struct qtreader *r, int level, int axis, uint64_t i, double v)
+{
+	struct qtcoord *k = &r->coord[level][axis][i & 1], *up;
+
+	if (k->valid && k->i == i)
+		return k;
+	k->i = i;
+	k->v = v;
+	k->valid = 1;
+	/* column 2j at this level is column j a level up, bit for bit */
+	up = level > 0 && axis < 2 && !(i & 1) ?
+	    &r->coord[level - 1][axis][(i >> 1) & 1] : NULL;
+	if (up != NULL && up->valid && up->i == i >> 1) {
+		memcpy(k->text, up->text, sizeof(k->text));
+		k->len = up->len;
+	} else
+		k->len = fmtreal(k->text, v) - k->text;
+	return k;
+}
+
+/* Reads a cell's x, y or size, which must be v; returns whether it is. */
 static int
 coordfield(struct qtreader *r, const char *text, int level, int axis,
     uint64_t i, double v, double *out)
 {
-	struct qtcoord *k = &r->coord[level][axis][i & 1], *up;
+	const struct qtcoord *k = coordtext(r, level, axis, i, v);
 
-	if (!k->valid || k->i != i) {
-		k->i = i;
-		k->v = v;
-		k->valid = 1;
-		/* column 2j at this level is column j a level up, bit for bit */
-		up = level > 0 && axis < 2 && !(i & 1) ?
-		    &r->coord[level - 1][axis][(i >> 1) & 1] : NULL;
-		if (up != NULL && up->valid && up->i == i >> 1)
-			memcpy(k->text, up->text, sizeof(k->text));
-		else
-			fmtreal(k->text, v);
-	}
 	if (strcmp(text, k->text) == 0) {
 		*out = v;
 		return 1;
@@ -190,6 +201,136 @@ parsecell(struct qtreader *r, struct qtrec *rec)
 		c->class = k[0];
 	}
 	r->havecells = 1;
+}
+
+/*
+ * Canonical decimal of want, the writers' spelling, then a space: returns
+ * what follows the space, NULL for any other text.
+ */
+static char *
+skipuint(char *p, uint64_t want)
+{
+	char *s = p;
+	uint64_t v = 0;
+	unsigned d;
+
+	while ((d = (unsigned char)*p - '0') <= 9) {
+		v = v * 10 + d;
+		p++;
+	}
+	if (p == s || p - s > 16 || (*s == '0' && p - s > 1) || *p != ' ' ||
+	    v != want)
+		return NULL;
+	return p + 1;
+}
+
+/*
+ * The text of k at p, then a space, or the end of the line when last:
+ * returns what follows.
+ */
+static char *
+skiptext(char *p, const char *end, const struct qtcoord *k, int last)
+{
+	if ((size_t)(end - p) < k->len || memcmp(p, k->text, k->len) != 0)
+		return NULL;
+	p += k->len;
+	if (last ? p != end : *p != ' ')
+		return NULL;
+	return p + 1;
+}
+
+/*
+ * The common record, a cell spelled as the writers spell it, checked in
+ * one pass over its bytes.  Returns 0 for anything else, and the record
+ * takes the long way, which also words the message for a defect.
+ */
+static int
+fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
+{
+	struct cell *c = &rec->c;
+	char *p = line + 5, *end = line + len, *path = p, *f[10];
+	uint64_t ix = 0, iy = 0;
+	double x, y, size;
+	unsigned d;
+	int level, i, n;
+
+	if (memcmp(line, "leaf ", 5) == 0)
+		rec->kind = QT_LEAF;
+	else if (memcmp(line, "node ", 5) == 0)
+		rec->kind = QT_NODE;
+	else
+		return 0;
+	if (!r->haveuniverse || r->vleft > 0)
+		return 0;
+	if (*p == '.')
+		p++;
+	else
+		while ((d = (unsigned char)*p - '0') <= 3) {
+			ix = ix << 1 | (d & 1);
+			iy = iy << 1 | d >> 1;
+			p++;
+		}
+	level = *path == '.' ? 0 : (int)(p - path);
+	if (p == path || level > QT_MAXLEVEL || *p != ' ')
+		return 0;
+	f[0] = line;
+	f[1] = path;
+	f[2] = ++p;
+	if ((p = skipuint(p, (uint64_t)level)) == NULL)
+		return 0;
+	f[3] = p;
+	if ((p = skipuint(p, ix)) == NULL)
+		return 0;
+	f[4] = p;
+	if ((p = skipuint(p, iy)) == NULL)
+		return 0;
+	size = r->cellsize[level];
+	x = r->u.x0 + (double)ix * size;
+	y = r->u.y0 + (double)iy * size;
+	f[5] = p;
+	if ((f[6] = skiptext(p, end, coordtext(r, level, 0, ix, x), 0)) == NULL)
+		return 0;
+	if ((f[7] = skiptext(f[6], end, coordtext(r, level, 1, iy, y), 0)) ==
+	    NULL)
+		return 0;
+	p = skiptext(f[7], end, coordtext(r, level, 2, 0, size),
+	    rec->kind == QT_NODE);
+	if (p == NULL)
+		return 0;
+	n = 8;
+	c->class = 0;
+	if (rec->kind == QT_LEAF) {
+		if (*p != 'F' && *p != 'E' && *p != 'P')
+			return 0;
+		c->class = *p;
+		f[n++] = p++;
+		if (*p == ' ') {
+			f[n++] = ++p;
+			while ((d = (unsigned char)*p - '0') <= 9)
+				p++;
+			if (p == f[9])
+				return 0;
+		}
+		if (p != end)
+			return 0;
+	}
+	for (i = 0; i < n; i++) {
+		if (i > 0)
+			f[i][-1] = '\0';
+		rec->field[i] = f[i];
+	}
+	rec->nfield = n;
+	rec->canon = 1;
+	c->path = path;
+	c->level = level;
+	c->ix = ix;
+	c->iy = iy;
+	c->x = x;
+	c->y = y;
+	c->size = size;
+	r->havecells = 1;
+	r->count++;
+	return 1;
 }
 
 static const struct {
@@ -331,20 +472,68 @@ body(struct qtreader *r, struct qtrec *rec)
 }
 
 /*
+ * The next line, without its newline and NUL-terminated, in *len bytes;
+ * NULL at the end of the input.  Input comes in large reads, returned as
+ * soon as they hold a line, so a pipe streams.
+ */
+static char *
+readline(struct qtreader *r, size_t *len)
+{
+	char *line, *nl;
+	size_t scanned = 0;
+	ssize_t n;
+
+	for (;;) {
+		line = r->buf + r->pos;
+		nl = memchr(line + scanned, '\n', r->end - r->pos - scanned);
+		if (nl != NULL) {
+			*nl = '\0';
+			*len = nl - line;
+			r->pos += *len + 1;
+			return line;
+		}
+		scanned = r->end - r->pos;
+		if (r->eof) {
+			if (scanned == 0)
+				return NULL;
+			line[scanned] = '\0';	/* a last line without newline */
+			*len = scanned;
+			r->pos = r->end;
+			return line;
+		}
+		if (r->pos > 0) {
+			memmove(r->buf, line, scanned);
+			r->pos = 0;
+			r->end = scanned;
+		}
+		if (r->cap - r->end < 4096) {
+			r->buf = xreallocarray(r->buf, r->cap, 2);
+			r->cap *= 2;
+		}
+		do
+			n = read(fileno(r->fp), r->buf + r->end,
+			    r->cap - 1 - r->end);
+		while (n < 0 && errno == EINTR);
+		if (n < 0)
+			errat(r->name, 0, "read error: %s", strerror(errno));
+		if (n == 0)
+			r->eof = 1;
+		r->end += n;
+	}
+}
+
+/*
  * Returns the next record, QT_EOF after a valid end record.  Every defect
  * of the stream is reported here with the file and line, and exits 1.
  */
 enum qtkind
 qt_read(struct qtreader *r, struct qtrec *rec)
 {
-	ssize_t n;
+	char *line;
+	size_t n = 0;
 
 	for (;;) {
-		errno = 0;
-		if ((n = getline(&r->buf, &r->cap, r->fp)) < 0) {
-			if (ferror(r->fp))
-				errat(r->name, 0, "read error: %s",
-				    strerror(errno ? errno : EIO));
+		if ((line = readline(r, &n)) == NULL) {
 			if (r->state == AFTER_END)
 				return QT_EOF;
 			if (r->state == BEFORE_HEADER)
@@ -352,22 +541,26 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 			qt_fail(r, "truncated stream: no end record");
 		}
 		r->lineno++;
-		if (n > 0 && r->buf[n - 1] == '\n')
-			r->buf[--n] = '\0';
-		if (strlen(r->buf) != (size_t)n)
+		rec->canon = 0;
+		if (r->state == IN_BODY && n > 5 && fastcell(r, rec, line, n)) {
+			rec->line = line;
+			rec->len = n;
+			return rec->kind;
+		}
+		if (strlen(line) != n)
 			qt_fail(r, "NUL byte in line");
-		if (r->buf[0] == '#')
+		if (line[0] == '#')
 			continue;
-		rec->line = r->buf;
+		rec->line = line;
 		rec->len = n;
 		switch (r->state) {
 		case BEFORE_HEADER:
-			if (strncmp(r->buf, "qtree ", 6) != 0)
+			if (strncmp(line, "qtree ", 6) != 0)
 				qt_fail(r, "not a qtree stream (no qtree "
 				    "header)");
-			if (strcmp(r->buf + 6, "1") != 0)
+			if (strcmp(line + 6, "1") != 0)
 				qt_fail(r, "unsupported qtree version: %s",
-				    r->buf + 6);
+				    line + 6);
 			r->state = IN_BODY;
 			continue;
 		case AFTER_END:
