@@ -399,8 +399,10 @@ body(struct qtreader *r, struct qtrec *rec)
 	if (taglen == 0)
 		qt_fail(r, "record without a tag");
 	r->count++;
-	if (rec->kind == QT_OTHER)
+	if (rec->kind == QT_OTHER) {
+		rec->nfield = 0;	/* not split */
 		return QT_OTHER;
+	}
 	rec->nfield = qt_split(r, rec->line, rec->field,
 	    (int)(sizeof(rec->field) / sizeof(rec->field[0])));
 	switch (rec->kind) {

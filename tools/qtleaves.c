@@ -89,11 +89,26 @@ putcoord(char *p, int axis, int level, uint64_t i)
 }
 
 static void
-putleaf(const struct cell *c, unsigned long long id)
+putleaf(struct qtrec *rec, unsigned long long id)
 {
+	const struct cell *c = &rec->c;
 	size_t n = strlen(c->path);
 	char *p = qt_record(n + 200);	/* path, 5 numbers, 3 reals */
 
+	if (rec->canon) {
+		/* as it would be written: the record up to its class, as read */
+		int i;
+
+		memcpy(p, rec->line, rec->field[8] + 1 - rec->line);
+		for (i = 1; i <= 8; i++)
+			p[rec->field[i] - 1 - rec->line] = ' ';
+		p += rec->field[8] + 1 - rec->line;
+		*p++ = ' ';
+		p = fmtint(p, (long long)id);
+		*p++ = '\n';
+		qt_recorded(p);
+		return;
+	}
 	memcpy(p, "leaf ", 5);
 	p += 5;
 	memcpy(p, c->path, n);
@@ -375,7 +390,7 @@ main(int argc, char *argv[])
 		case QT_LEAF:
 			kept = keep[(unsigned char)rec.c.class];
 			if (kept)
-				putleaf(&rec.c, ++id);
+				putleaf(&rec, ++id);
 			if (mesh)
 				meshleaf(&r, &rec.c, kept);
 			break;
