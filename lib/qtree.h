@@ -86,11 +86,11 @@ struct qtrec {
 };
 
 struct qtcoord {
-	int		 valid;
 	uint64_t	 i;
 	double		 v;
-	size_t		 len;
-	char		 text[32];
+	size_t		 len, ilen;
+	char		 text[32];	/* of v */
+	char		 itext[24];	/* of i */
 };
 
 struct qtreader {
@@ -107,7 +107,10 @@ struct qtreader {
 	int		 haveuniverse, havelevel, havecells;
 	struct universe	 u;
 	double		 cellsize[QT_MAXLEVEL + 1];
-	struct qtcoord	 coord[QT_MAXLEVEL + 1][3][2];	/* stream.c */
+	struct qtcoord	 coord[QT_MAXLEVEL + 1][3][8];	/* stream.c */
+	char		 path[QT_MAXLEVEL];	/* the last cell's */
+	int		 pathlen;
+	uint64_t	 pathix[QT_MAXLEVEL + 1], pathiy[QT_MAXLEVEL + 1];
 };
 
 struct ring {

@@ -11,6 +11,8 @@
 
 enum { BEFORE_HEADER, IN_BODY, AFTER_END };
 
+#define NCOORD	8	/* columns kept per level and axis */
+
 /* Cell corners as qtree(5) defines them: x0 + i * h in double arithmetic. */
 double
 cellcoord(double x0, double size, int level, uint64_t i)
@@ -43,7 +45,12 @@ pathcell(const char *path, int level, uint64_t *ix, uint64_t *iy)
 void
 qt_open(struct qtreader *r, FILE *fp, const char *name)
 {
+	struct qtcoord *k = &r->coord[0][0][0];
+	size_t i;
+
 	memset(r, 0, sizeof(*r));
+	for (i = 0; i < sizeof(r->coord) / sizeof(*k); i++)
+		k[i].i = UINT64_MAX;
 	r->fp = fp;
 	r->name = name;
 	r->cap = 1 << 18;
@@ -112,29 +119,37 @@ nfields(struct qtreader *r, struct qtrec *rec, int lo, int hi)
 }
 
 /*
- * The text of a cell's x, y or size, the value v, kept per level, axis and
- * column parity (siblings share columns and rows): writers print the
- * shortest text, so a field is compared with it before any parsing.
+ * The text of a cell's column or row and of its x, y or size, the value
+ * v, kept per level and axis for the last few columns (neighbours share
+ * columns and rows): writers print the shortest text, so a field is
+ * compared with it before any parsing.  Column UINT64_MAX marks an empty
+ * entry.
  */
 static const struct qtcoord *
-coordtext(struct qtreader *r, int level, int axis, uint64_t i, double v)
+coordmiss(struct qtreader *r, int level, int axis, uint64_t i, double v)
 {
-	struct qtcoord *k = &r->coord[level][axis][i & 1], *up;
+	struct qtcoord *k = &r->coord[level][axis][i % NCOORD], *up;
 
-	if (k->valid && k->i == i)
-		return k;
 	k->i = i;
 	k->v = v;
-	k->valid = 1;
 	/* column 2j at this level is column j a level up, bit for bit */
 	up = level > 0 && axis < 2 && !(i & 1) ?
-	    &r->coord[level - 1][axis][(i >> 1) & 1] : NULL;
-	if (up != NULL && up->valid && up->i == i >> 1) {
+	    &r->coord[level - 1][axis][(i >> 1) % NCOORD] : NULL;
+	if (up != NULL && up->i == i >> 1) {
 		memcpy(k->text, up->text, sizeof(k->text));
 		k->len = up->len;
 	} else
 		k->len = fmtreal(k->text, v) - k->text;
+	k->ilen = fmtint(k->itext, (long long)i) - k->itext;
 	return k;
+}
+
+static inline const struct qtcoord *
+coordtext(struct qtreader *r, int level, int axis, uint64_t i, double v)
+{
+	const struct qtcoord *k = &r->coord[level][axis][i % NCOORD];
+
+	return k->i == i ? k : coordmiss(r, level, axis, i, v);
 }
 
 /* Reads a cell's x, y or size, which must be v; returns whether it is. */
@@ -203,40 +218,114 @@ parsecell(struct qtreader *r, struct qtrec *rec)
 	r->havecells = 1;
 }
 
-/*
- * Canonical decimal of want, the writers' spelling, then a space: returns
- * what follows the space, NULL for any other text.
- */
-static char *
-skipuint(char *p, uint64_t want)
+/* Whether the n bytes at a are those at b, n < 32; a word at a time. */
+static inline int
+sametext(const char *a, const char *b, size_t n)
 {
-	char *s = p;
-	uint64_t v = 0;
-	unsigned d;
+	uint64_t x, y;
+	uint32_t u, v;
+	size_t i;
 
-	while ((d = (unsigned char)*p - '0') <= 9) {
-		v = v * 10 + d;
-		p++;
+	if (n >= 8) {
+		for (i = 0; i + 8 < n; i += 8) {
+			memcpy(&x, a + i, 8);
+			memcpy(&y, b + i, 8);
+			if (x != y)
+				return 0;
+		}
+		memcpy(&x, a + n - 8, 8);	/* the last word may overlap */
+		memcpy(&y, b + n - 8, 8);
+		return x == y;
 	}
-	if (p == s || p - s > 16 || (*s == '0' && p - s > 1) || *p != ' ' ||
-	    v != want)
-		return NULL;
-	return p + 1;
+	if (n >= 4) {
+		memcpy(&u, a, 4);
+		memcpy(&v, b, 4);
+		if (u != v)
+			return 0;
+		memcpy(&u, a + n - 4, 4);
+		memcpy(&v, b + n - 4, 4);
+		return u == v;
+	}
+	for (i = 0; i < n; i++)
+		if (a[i] != b[i])
+			return 0;
+	return 1;
 }
 
 /*
- * The text of k at p, then a space, or the end of the line when last:
- * returns what follows.
+ * The n bytes of text at p, then a space or, when last, the end of the
+ * line: returns what follows, NULL for any other text.  Spaces become
+ * NULs as the fields are found.
  */
-static char *
-skiptext(char *p, const char *end, const struct qtcoord *k, int last)
+static inline char *
+skiptext(char *p, const char *end, const char *text, size_t n, int last)
 {
-	if ((size_t)(end - p) < k->len || memcmp(p, k->text, k->len) != 0)
+	if ((size_t)(end - p) < n || !sametext(p, text, n))
 		return NULL;
-	p += k->len;
+	p += n;
 	if (last ? p != end : *p != ' ')
 		return NULL;
+	*p = '\0';
 	return p + 1;
+}
+
+/* A level as the writers spell it, then a space. */
+static inline char *
+skiplevel(char *p, int level)
+{
+	if (level >= 10 && *p++ != '0' + level / 10)
+		return NULL;
+	if (p[0] != '0' + level % 10 || p[1] != ' ')
+		return NULL;
+	p[1] = '\0';
+	return p + 2;
+}
+
+/*
+ * Column and row of the path at p, which ends at a space: from the
+ * previous path's, which shares a prefix with it in preorder.  Returns
+ * the level, -1 when the path is not canonical.
+ */
+static inline int
+skippath(struct qtreader *r, char **pp, const char *end, uint64_t *ix,
+    uint64_t *iy)
+{
+	char *p = *pp;
+	int k = 0, n = r->pathlen;
+	uint64_t a, b;
+	unsigned d;
+
+	if (p[0] == '.') {
+		if (p[1] != ' ')
+			return -1;
+		p[1] = '\0';
+		*pp = p + 2;
+		*ix = *iy = 0;
+		return 0;
+	}
+	while (k + 8 <= n && p + k + 8 <= end) {
+		memcpy(&a, p + k, 8);
+		memcpy(&b, r->path + k, 8);
+		if (a != b)
+			break;
+		k += 8;
+	}
+	while (k < n && p[k] == r->path[k])
+		k++;
+	r->pathlen = k;		/* what stays valid if the path is not */
+	for (; (d = (unsigned char)p[k] - '0') <= 3 && k < QT_MAXLEVEL; k++) {
+		r->path[k] = p[k];
+		r->pathix[k + 1] = r->pathix[k] << 1 | (d & 1);
+		r->pathiy[k + 1] = r->pathiy[k] << 1 | d >> 1;
+	}
+	if (k == 0 || p[k] != ' ')
+		return -1;
+	r->pathlen = k;
+	p[k] = '\0';
+	*pp = p + k + 1;
+	*ix = r->pathix[k];
+	*iy = r->pathiy[k];
+	return k;
 }
 
 /*
@@ -248,11 +337,12 @@ static int
 fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 {
 	struct cell *c = &rec->c;
-	char *p = line + 5, *end = line + len, *path = p, *f[10];
-	uint64_t ix = 0, iy = 0;
-	double x, y, size;
+	char *p = line + 5, *end = line + len, *f[10];
+	const struct qtcoord *kx, *ky, *ks;
+	uint64_t ix, iy;
+	double size;
 	unsigned d;
-	int level, i, n;
+	int level, i, n = 0;
 
 	if (memcmp(line, "leaf ", 5) == 0)
 		rec->kind = QT_LEAF;
@@ -262,75 +352,58 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 		return 0;
 	if (!r->haveuniverse || r->vleft > 0)
 		return 0;
-	if (*p == '.')
-		p++;
-	else
-		while ((d = (unsigned char)*p - '0') <= 3) {
-			ix = ix << 1 | (d & 1);
-			iy = iy << 1 | d >> 1;
-			p++;
-		}
-	level = *path == '.' ? 0 : (int)(p - path);
-	if (p == path || level > QT_MAXLEVEL || *p != ' ')
-		return 0;
-	f[0] = line;
-	f[1] = path;
-	f[2] = ++p;
-	if ((p = skipuint(p, (uint64_t)level)) == NULL)
-		return 0;
-	f[3] = p;
-	if ((p = skipuint(p, ix)) == NULL)
-		return 0;
-	f[4] = p;
-	if ((p = skipuint(p, iy)) == NULL)
-		return 0;
+	f[n++] = line;
+	f[n++] = p;
+	if ((level = skippath(r, &p, end, &ix, &iy)) < 0)
+		goto fail;
 	size = r->cellsize[level];
-	x = r->u.x0 + (double)ix * size;
-	y = r->u.y0 + (double)iy * size;
-	f[5] = p;
-	if ((f[6] = skiptext(p, end, coordtext(r, level, 0, ix, x), 0)) == NULL)
-		return 0;
-	if ((f[7] = skiptext(f[6], end, coordtext(r, level, 1, iy, y), 0)) ==
-	    NULL)
-		return 0;
-	p = skiptext(f[7], end, coordtext(r, level, 2, 0, size),
-	    rec->kind == QT_NODE);
-	if (p == NULL)
-		return 0;
-	n = 8;
+	kx = coordtext(r, level, 0, ix, r->u.x0 + (double)ix * size);
+	ky = coordtext(r, level, 1, iy, r->u.y0 + (double)iy * size);
+	ks = coordtext(r, level, 2, 0, size);
+	if ((f[n++] = p, p = skiplevel(p, level)) == NULL ||
+	    (f[n++] = p, p = skiptext(p, end, kx->itext, kx->ilen, 0)) == NULL ||
+	    (f[n++] = p, p = skiptext(p, end, ky->itext, ky->ilen, 0)) == NULL ||
+	    (f[n++] = p, p = skiptext(p, end, kx->text, kx->len, 0)) == NULL ||
+	    (f[n++] = p, p = skiptext(p, end, ky->text, ky->len, 0)) == NULL ||
+	    (f[n++] = p, p = skiptext(p, end, ks->text, ks->len,
+	    rec->kind == QT_NODE)) == NULL)
+		goto fail;
 	c->class = 0;
 	if (rec->kind == QT_LEAF) {
+		f[n++] = p;
 		if (*p != 'F' && *p != 'E' && *p != 'P')
-			return 0;
-		c->class = *p;
-		f[n++] = p++;
+			goto fail;
+		c->class = *p++;
 		if (*p == ' ') {
-			f[n++] = ++p;
+			*p++ = '\0';
+			f[n++] = p;
 			while ((d = (unsigned char)*p - '0') <= 9)
 				p++;
 			if (p == f[9])
-				return 0;
+				goto fail;
 		}
 		if (p != end)
-			return 0;
+			goto fail;
 	}
-	for (i = 0; i < n; i++) {
-		if (i > 0)
-			f[i][-1] = '\0';
+	for (i = 0; i < n; i++)
 		rec->field[i] = f[i];
-	}
 	rec->nfield = n;
 	rec->canon = 1;
-	c->path = path;
+	c->path = f[1];
 	c->level = level;
 	c->ix = ix;
 	c->iy = iy;
-	c->x = x;
-	c->y = y;
+	c->x = kx->v;
+	c->y = ky->v;
 	c->size = size;
 	r->havecells = 1;
 	r->count++;
 	return 1;
+fail:
+	/* the fields found so far were ended by a space */
+	for (i = 2; i < n; i++)
+		f[i][-1] = ' ';
+	return 0;
 }
 
 static const struct {

@@ -147,20 +147,30 @@ bad_case() {
 
 @test "cells spelled another way read as the same cells in every reader" {
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 > canon.qt
+	# one field at a time, so that a reader's every step meets one:
 	# leading zeros and signs on the integers, exponents and zeros on the
-	# reals: the same numbers, none spelled as the writers spell them
-	awk '$1 == "leaf" || $1 == "node" {
-		$3 = "0" $3; $4 = "+" $4; $5 = "00" $5
-		$6 = $6 "e0"; $7 = ($7 ~ /\./ ? $7 "00" : $7 ".0"); $8 = "0" $8
-	} { print }' canon.qt > alt.qt
-	! cmp -s canon.qt alt.qt
-	[ "$(grep -c '^leaf 0' alt.qt)" -gt 10 ]
+	# reals, the same numbers spelled otherwise than the writers do
+	for j in 3 4 5 6 7 8; do
+		awk -v j=$j '$1 == "leaf" || $1 == "node" {
+			if (j == 3) $3 = "0" $3
+			if (j == 4) $4 = "+" $4
+			if (j == 5) $5 = "00" $5
+			if (j == 6) $6 = $6 "e0"
+			if (j == 7) $7 = ($7 ~ /\./ ? $7 "00" : $7 ".0")
+			if (j == 8) $8 = "0" $8
+		} { print }' canon.qt > alt$j.qt
+		! cmp -s canon.qt alt$j.qt
+	done
 	for p in qtleaves "qtleaves -n" qtstats "qtstats -l" qt2svg; do
 		$p canon.qt > want
-		$p alt.qt > got
-		cmp want got
+		for j in 3 4 5 6 7 8; do
+			$p alt$j.qt > got
+			cmp want got
+		done
 	done
 	# and qtleaves writes them back as the writers spell them
-	qtleaves -c FEP alt.qt | grep '^leaf' | cut -d' ' -f1-9 > leaves
-	grep '^leaf' canon.qt | cmp - leaves
+	for j in 3 4 5 6 7 8; do
+		qtleaves -c FEP alt$j.qt | grep '^leaf' | cut -d' ' -f1-9 > leaves
+		grep '^leaf' canon.qt | cmp - leaves
+	done
 }
