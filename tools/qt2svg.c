@@ -63,6 +63,8 @@ static double scale;		/* pixels per world unit */
 static struct buf leaves[NCLASS];
 static unsigned long long nleaves[NCLASS];
 static double finest = -1;	/* side of the smallest thing drawn, pixels */
+static int deepestleaf = -1;	/* the level of the smallest leaf drawn */
+static double cellside[QT_MAXLEVEL + 1];
 
 /* Ring styles, which the legend repeats. */
 static const char ringstyle[] = "stroke=\"#000000\" stroke-width=\"1.5\"";
@@ -106,6 +108,17 @@ put(struct buf *b, const char *s, size_t n)
 	}
 	memcpy(b->p + b->len, s, n);
 	b->len += n;
+}
+
+/* Room for n more bytes at the end of b, for formatting in place. */
+static char *
+room(struct buf *b, size_t n)
+{
+	if (b->len + n > b->cap) {
+		b->cap = b->cap + n > 2 * b->cap ? b->cap + n : 2 * b->cap;
+		b->p = xreallocarray(b->p, b->cap, 1);
+	}
+	return b->p + b->len;
 }
 
 static void
@@ -231,28 +244,35 @@ leaf(struct qtreader *r, const struct qtrec *rec)
 	int k = classindex(c->class);
 	long long x0, x1, y0, y1, id = 0;
 	struct buf *b = &leaves[k];
+	char *p;
 
 	if (rec->nfield == 10)
 		id = positiveid(r, rec->field[9], "element id");
 	if (!drawn[k])
 		return;
 	x0 = pixelx(c->x);
-	x1 = pixelx(cellcoord(u.x0, u.size, c->level, c->ix + 1));
+	x1 = pixelx(u.x0 + (double)(c->ix + 1) * cellside[c->level]);
 	y0 = pixely(c->y);
-	y1 = pixely(cellcoord(u.y0, u.size, c->level, c->iy + 1));
+	y1 = pixely(u.y0 + (double)(c->iy + 1) * cellside[c->level]);
 	if (nleaves[k] > 0 && nleaves[k] % CHUNK == 0)
 		putstr(b, "\"/>\n<path d=\"");
-	put(b, "M", 1);
-	putxy(b, x0, y1);
-	put(b, "h", 1);
-	puthund(b, x1 - x0);
-	put(b, "v", 1);
-	puthund(b, y0 - y1);
-	put(b, "h", 1);
-	puthund(b, x0 - x1);
-	put(b, "z", 1);
+	/* five numbers of at most 22 bytes, and five letters and a space */
+	p = room(b, 5 * 22 + 6);
+	*p++ = 'M';
+	p = fmthund(p, x0);
+	*p++ = ' ';
+	p = fmthund(p, y1);
+	*p++ = 'h';
+	p = fmthund(p, x1 - x0);
+	*p++ = 'v';
+	p = fmthund(p, y0 - y1);
+	*p++ = 'h';
+	p = fmthund(p, x0 - x1);
+	*p++ = 'z';
+	b->len = p - b->p;
 	nleaves[k]++;
-	seefeature(ldexp(u.size, -c->level) * scale);
+	if (c->level > deepestleaf)
+		deepestleaf = c->level;
 	if (nflag && id > 0) {
 		label(&leaflabels, (x0 + x1) / 2, (y0 + y1) / 2,
 		    (x1 - x0) / 100.0, id);
@@ -695,8 +715,12 @@ numbers(double f)
 static void
 writesvg(void)
 {
-	double f = finest >= 0 ? finest : width - 2 * margin;
+	double f;
 	int rows = legendrows();
+
+	if (deepestleaf >= 0)
+		seefeature(cellside[deepestleaf] * scale);
+	f = finest >= 0 ? finest : width - 2 * margin;
 
 	svghead(width + (long long)ROW * rows + (rows > 0 ? margin : 0));
 	shapes(f);
@@ -744,7 +768,7 @@ main(int argc, char *argv[])
 	enum qtkind kind;
 	const char *name;
 	FILE *fp;
-	int ch;
+	int ch, i;
 
 	setprogname_(argv[0]);
 	classes("FEP");
@@ -783,6 +807,8 @@ main(int argc, char *argv[])
 		case QT_UNIVERSE:
 			u = rec.u;
 			scale = (width - 2 * margin) / u.size;
+			for (i = 0; i <= QT_MAXLEVEL; i++)
+				cellside[i] = ldexp(u.size, -i);
 			break;
 		case QT_RING:
 			ringstart(&rec);

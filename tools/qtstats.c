@@ -311,44 +311,53 @@ readstream(struct qtreader *r)
 }
 
 /*
- * Sorts by (x, y without the level), least significant digit first, two
- * bytes a pass; passes whose digit is the same for all are skipped, which
- * on the level-GRID grid are most of the low ones.
+ * Sorts by (x, y without the level), least significant digit first.  The
+ * keys are multiples of 2^(GRID - deepest) up to 2^GRID, so only their
+ * deepest + 1 bits above those are sorted on; the counts of every digit
+ * come from one pass, and a digit that is the same for all takes none.
  */
+#define DIGITBITS	11
+#define NDIGIT		((GRID + DIGITBITS) / DIGITBITS)	/* per key */
+
 static void
 sortrecs(struct lrec *a, struct lrec *tmp, size_t n)
 {
-	static size_t count[65536];
+	static size_t count[2 * NDIGIT][1 << DIGITBITS];
+	const uint64_t mask = (1 << DIGITBITS) - 1;
 	struct lrec *src = a, *dst = tmp, *t;
-	int pass;
+	int low = GRID - deepest, ndigit = (deepest + DIGITBITS) / DIGITBITS;
+	int pass, d;
 	size_t i, sum;
 
 	if (n == 0)
 		return;
-	for (pass = 0; pass < 8; pass++) {
-		int shift = 16 * (pass % 4);
-		int usex = pass >= 4;
-		unsigned d;
+	memset(count, 0, 2 * ndigit * sizeof(count[0]));
+	for (i = 0; i < n; i++) {
+		uint64_t kx = a[i].x >> low, ky = (a[i].y & COORDMASK) >> low;
 
-		memset(count, 0, sizeof(count));
-		for (i = 0; i < n; i++) {
-			uint64_t k = usex ? src[i].x : src[i].y & COORDMASK;
-
-			count[k >> shift & 0xffff]++;
+		for (d = 0; d < ndigit; d++) {
+			count[d][ky >> DIGITBITS * d & mask]++;
+			count[ndigit + d][kx >> DIGITBITS * d & mask]++;
 		}
-		d = (usex ? src[0].x : src[0].y & COORDMASK) >> shift & 0xffff;
-		if (count[d] == n)
+	}
+	for (pass = 0; pass < 2 * ndigit; pass++) {
+		int usex = pass >= ndigit;
+		int shift = low + DIGITBITS * (pass % ndigit);
+		size_t *c = count[pass];
+
+		if (c[(usex ? src[0].x : src[0].y & COORDMASK) >> shift &
+		    mask] == n)
 			continue;
-		for (i = 0, sum = 0; i < 65536; i++) {
-			size_t c = count[i];
+		for (i = 0, sum = 0; i <= mask; i++) {
+			size_t k = c[i];
 
-			count[i] = sum;
-			sum += c;
+			c[i] = sum;
+			sum += k;
 		}
 		for (i = 0; i < n; i++) {
 			uint64_t k = usex ? src[i].x : src[i].y & COORDMASK;
 
-			dst[count[k >> shift & 0xffff]++] = src[i];
+			dst[c[k >> shift & mask]++] = src[i];
 		}
 		t = src, src = dst, dst = t;
 	}
