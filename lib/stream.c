@@ -167,6 +167,38 @@ coordfield(struct qtreader *r, const char *text, int level, int axis,
 	return *out == v;
 }
 
+/*
+ * Whether a cell at path, of length n, may follow the last cell read:
+ * in preorder it is a descendant of it or on a later branch.
+ */
+static int
+follows(const struct qtreader *r, const char *path, int n)
+{
+	int k = 0;
+
+	if (!r->havecells)
+		return 1;
+	while (k < r->pathlen && k < n && path[k] == r->path[k])
+		k++;
+	return k < r->pathlen ? k < n && path[k] > r->path[k] : n > k;
+}
+
+/* Keeps the path of the cell just read, and its prefixes' columns and rows. */
+static void
+setpath(struct qtreader *r, const char *path, int n)
+{
+	int k;
+
+	for (k = 0; k < n; k++) {
+		unsigned d = path[k] - '0';
+
+		r->path[k] = path[k];
+		r->pathix[k + 1] = r->pathix[k] << 1 | (d & 1);
+		r->pathiy[k + 1] = r->pathiy[k] << 1 | d >> 1;
+	}
+	r->pathlen = n;
+}
+
 static void
 parsecell(struct qtreader *r, struct qtrec *rec)
 {
@@ -186,6 +218,11 @@ parsecell(struct qtreader *r, struct qtrec *rec)
 	c->level = intfield(r, rec->field[2], "level", 0, QT_MAXLEVEL);
 	if (pathcell(c->path, c->level, &ix, &iy) < 0)
 		qt_fail(r, "path %s does not fit level %d", c->path, c->level);
+	if (!follows(r, c->level > 0 ? c->path : "", c->level))
+		qt_fail(r, "cell %s does not follow cell %.*s in preorder",
+		    c->path, r->pathlen > 0 ? r->pathlen : 1,
+		    r->pathlen > 0 ? r->path : ".");
+	setpath(r, c->path, c->level);
 	lim = ((unsigned long long)1 << c->level) - 1;
 	c->ix = intfield(r, rec->field[3], "ix", 0, lim);
 	c->iy = intfield(r, rec->field[4], "iy", 0, lim);
@@ -282,25 +319,27 @@ skiplevel(char *p, int level)
 }
 
 /*
- * Column and row of the path at p, which ends at a space: from the
- * previous path's, which shares a prefix with it in preorder.  Returns
- * the level, -1 when the path is not canonical.
+ * The path at p, which ends at a space, as the writers spell it, of a cell
+ * that follows the last one in preorder: its column and row come from the
+ * last path's prefix, which it shares, and *common is that prefix's length.
+ * Returns the level, -1 for anything else.
  */
 static inline int
 skippath(struct qtreader *r, char **pp, const char *end, uint64_t *ix,
-    uint64_t *iy)
+    uint64_t *iy, int *common)
 {
 	char *p = *pp;
-	int k = 0, n = r->pathlen;
+	int j, k = 0, n = r->pathlen;
 	uint64_t a, b;
 	unsigned d;
 
 	if (p[0] == '.') {
-		if (p[1] != ' ')
+		if (p[1] != ' ' || r->havecells)
 			return -1;
 		p[1] = '\0';
 		*pp = p + 2;
 		*ix = *iy = 0;
+		*common = 0;
 		return 0;
 	}
 	while (k + 8 <= n && p + k + 8 <= end) {
@@ -312,20 +351,22 @@ skippath(struct qtreader *r, char **pp, const char *end, uint64_t *ix,
 	}
 	while (k < n && p[k] == r->path[k])
 		k++;
-	r->pathlen = k;		/* what stays valid if the path is not */
-	for (; (d = (unsigned char)p[k] - '0') <= 3 && k < QT_MAXLEVEL; k++) {
-		r->path[k] = p[k];
-		r->pathix[k + 1] = r->pathix[k] << 1 | (d & 1);
-		r->pathiy[k + 1] = r->pathiy[k] << 1 | d >> 1;
+	/* the prefixes past k are the new path's from here on */
+	for (j = k; (d = (unsigned char)p[j] - '0') <= 3 && j < QT_MAXLEVEL;
+	    j++) {
+		r->pathix[j + 1] = r->pathix[j] << 1 | (d & 1);
+		r->pathiy[j + 1] = r->pathiy[j] << 1 | d >> 1;
 	}
-	if (k == 0 || p[k] != ' ')
+	if (j == 0 || p[j] != ' ')
 		return -1;
-	r->pathlen = k;
-	p[k] = '\0';
-	*pp = p + k + 1;
-	*ix = r->pathix[k];
-	*iy = r->pathiy[k];
-	return k;
+	if (r->havecells && (j == k || (k < n && p[k] < r->path[k])))
+		return -1;
+	p[j] = '\0';
+	*pp = p + j + 1;
+	*ix = r->pathix[j];
+	*iy = r->pathiy[j];
+	*common = k;
+	return j;
 }
 
 /*
@@ -342,7 +383,7 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 	uint64_t ix, iy;
 	double size;
 	unsigned d;
-	int level, i, n = 0;
+	int level, common, i, n = 0;
 
 	if (memcmp(line, "leaf ", 5) == 0)
 		rec->kind = QT_LEAF;
@@ -354,7 +395,7 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 		return 0;
 	f[n++] = line;
 	f[n++] = p;
-	if ((level = skippath(r, &p, end, &ix, &iy)) < 0)
+	if ((level = skippath(r, &p, end, &ix, &iy, &common)) < 0)
 		goto fail;
 	size = r->cellsize[level];
 	kx = coordtext(r, level, 0, ix, r->u.x0 + (double)ix * size);
@@ -389,6 +430,8 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 		rec->field[i] = f[i];
 	rec->nfield = n;
 	rec->canon = 1;
+	memcpy(r->path + common, f[1] + common, level - common);
+	r->pathlen = level;
 	c->path = f[1];
 	c->level = level;
 	c->ix = ix;

@@ -209,15 +209,20 @@ note among cells" ]
 	[ "$stderr" = "qtleaves: m.qt:14: the input already holds a mesh (vertex record): qtleaves reads a tree" ]
 }
 
-@test "-n wants the leaves in preorder; without it they are numbered as they come" {
+@test "leaves out of preorder are refused, by every reader" {
 	amoeba 4
 	# swap the first two leaves
 	awk '$1 == "leaf" && !held { held = $0; next }
 	    { print } $1 == "leaf" && held != 1 { print held; held = 1 }' \
 	    amoeba4.qt > swapped.qt
-	run -1 --separate-stderr qtleaves -n swapped.qt
-	[[ "$stderr" == "qtleaves: swapped.qt:"*": leaf "*" is out of preorder (-n needs the leaves in preorder)" ]]
-	run -0 qtleaves swapped.qt
+	first=$(awk '$1 == "leaf" { print $2; exit }' amoeba4.qt)
+	second=$(awk '$1 == "leaf" && n++ { print $2; exit }' amoeba4.qt)
+	line=$(grep -n "^leaf $first " swapped.qt | cut -d: -f1)
+	for p in qtleaves "qtleaves -n" qtstats qt2svg; do
+		run -1 --separate-stderr $p swapped.qt
+		[ "$stderr" = "${p%% *}: swapped.qt:$line: cell $first does not follow cell $second in preorder" ]
+		[ -z "$(grep '^end' <<< "$output")" ]
+	done
 }
 
 @test "a truncated stream is an error, and the output has no end record" {

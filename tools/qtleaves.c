@@ -240,19 +240,17 @@ vertex(uint64_t x, uint64_t y)
 	return v.id;
 }
 
-/* Every leaf passes here with -n, kept or not, to check the order. */
+/*
+ * Every leaf passes here with -n, kept or not, to move the Z order
+ * position on; the reader has checked that cells come in preorder.
+ */
 static void
-meshleaf(struct qtreader *r, const struct cell *c, int kept)
+meshleaf(const struct cell *c, int kept)
 {
-	static int first = 1;
 	int shift = GRID - c->level;
 	uint64_t x = c->ix << shift, y = c->iy << shift;
 	uint64_t s = (uint64_t)1 << shift;
 
-	if (!first && !zbefore(curx, cury, x, y))
-		qt_fail(r, "leaf %s is out of preorder (-n needs the leaves "
-		    "in preorder)", c->path);
-	first = 0;
 	curx = x;
 	cury = y;
 	if (!kept)
@@ -392,7 +390,7 @@ main(int argc, char *argv[])
 			if (kept)
 				putleaf(&rec, ++id);
 			if (mesh)
-				meshleaf(&r, &rec.c, kept);
+				meshleaf(&rec.c, kept);
 			break;
 		default:
 			if (istag(rec.line, "vertex") || istag(rec.line, "elem"))
