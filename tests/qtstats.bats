@@ -232,9 +232,16 @@ elements_tri 2
 hanging_vertices 1" ]
 }
 
-@test "max_level_jump on the amoeba equals a neighbour search in awk" {
-	for l in 6 8; do
-		polyread "$SAMPLES/amoeba.brep" | qtsplit -l $l > t.qt
+@test "max_level_jump equals a neighbour search in awk" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 6 a.qt > t1.qt
+	qtsplit -l 8 a.qt > t2.qt
+	# deep subtrees: keys of more than 16 bits take two digits to sort
+	qtsplit -l 14 -r 001222 a.qt > t3.qt
+	qtsplit -l 18 -r 001222 a.qt > t4.qt
+	awk -v shape=star -v n=300 -v m=0 -f "$TOP/tools/genpoly.awk" |
+	    polyread | qtsplit -l 9 > t5.qt
+	for t in t1 t2 t3 t4 t5; do
 		# for each leaf and side, the leaf holding the same-size cell
 		# across it, found by going up; a finer neighbour finds this one
 		want=$(awk '
@@ -257,8 +264,8 @@ hanging_vertices 1" ]
 				}
 			}
 			print best + 0
-		}' t.qt)
-		qtstats t.qt > s
+		}' $t.qt)
+		qtstats $t.qt > s
 		[ "$(value max_level_jump s)" = "$want" ]
 		[ "$want" -gt 0 ]
 	done

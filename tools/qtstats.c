@@ -311,42 +311,40 @@ readstream(struct qtreader *r)
 }
 
 /*
- * Sorts by (x, y without the level), least significant digit first.  The
- * keys are multiples of 2^(GRID - deepest) up to 2^GRID, so only their
- * deepest + 1 bits above those are sorted on; the counts of every digit
- * come from one pass, and a digit that is the same for all takes none.
+ * Sorts by x, stably, least significant digit first.  That sorts by
+ * (x, y): the leaves come in preorder, and preorder puts the cells whose
+ * left sides, or right sides, lie on one line in the order of their y
+ * (the first cell to differ between two of them is south of the other's,
+ * the line being no further west than their split); and the second axis
+ * starts from an array sorted by (y, x).  The keys are multiples of
+ * 2^(GRID - deepest) up to 2^GRID, so only their deepest + 1 bits above
+ * those are sorted on, in the fewest digits of at most 16 bits; the counts
+ * of every digit come from one pass, and a digit that is the same for all
+ * takes none.
  */
-#define DIGITBITS	11
-#define NDIGIT		((GRID + DIGITBITS) / DIGITBITS)	/* per key */
+#define MAXDIGITS	((GRID + 16) / 16)
 
 static void
 sortrecs(struct lrec *a, struct lrec *tmp, size_t n)
 {
-	static size_t count[2 * NDIGIT][1 << DIGITBITS];
-	const uint64_t mask = (1 << DIGITBITS) - 1;
+	static size_t count[MAXDIGITS][1 << 16];
 	struct lrec *src = a, *dst = tmp, *t;
-	int low = GRID - deepest, ndigit = (deepest + DIGITBITS) / DIGITBITS;
-	int pass, d;
+	int low = GRID - deepest, ndigit = (deepest + 16) / 16;
+	int width = (deepest + ndigit) / ndigit, d;
+	uint64_t mask = ((uint64_t)1 << width) - 1;
 	size_t i, sum;
 
 	if (n == 0)
 		return;
-	memset(count, 0, 2 * ndigit * sizeof(count[0]));
-	for (i = 0; i < n; i++) {
-		uint64_t kx = a[i].x >> low, ky = (a[i].y & COORDMASK) >> low;
+	memset(count, 0, ndigit * sizeof(count[0]));
+	for (i = 0; i < n; i++)
+		for (d = 0; d < ndigit; d++)
+			count[d][a[i].x >> (low + width * d) & mask]++;
+	for (d = 0; d < ndigit; d++) {
+		int shift = low + width * d;
+		size_t *c = count[d];
 
-		for (d = 0; d < ndigit; d++) {
-			count[d][ky >> DIGITBITS * d & mask]++;
-			count[ndigit + d][kx >> DIGITBITS * d & mask]++;
-		}
-	}
-	for (pass = 0; pass < 2 * ndigit; pass++) {
-		int usex = pass >= ndigit;
-		int shift = low + DIGITBITS * (pass % ndigit);
-		size_t *c = count[pass];
-
-		if (c[(usex ? src[0].x : src[0].y & COORDMASK) >> shift &
-		    mask] == n)
+		if (c[src[0].x >> shift & mask] == n)
 			continue;
 		for (i = 0, sum = 0; i <= mask; i++) {
 			size_t k = c[i];
@@ -354,11 +352,8 @@ sortrecs(struct lrec *a, struct lrec *tmp, size_t n)
 			c[i] = sum;
 			sum += k;
 		}
-		for (i = 0; i < n; i++) {
-			uint64_t k = usex ? src[i].x : src[i].y & COORDMASK;
-
-			dst[c[k >> shift & mask]++] = src[i];
-		}
+		for (i = 0; i < n; i++)
+			dst[c[src[i].x >> shift & mask]++] = src[i];
 		t = src, src = dst, dst = t;
 	}
 	if (src != a)
@@ -419,11 +414,11 @@ sweepaxis(struct lrec *lo, struct lrec *hi, struct lrec *tmp, size_t n)
 {
 	size_t i;
 
-	sortrecs(lo, tmp, n);
 	for (i = 0; i < n; i++) {
 		hi[i].x = lo[i].x + span(&lo[i]);
 		hi[i].y = lo[i].y;
 	}
+	sortrecs(lo, tmp, n);
 	sortrecs(hi, tmp, n);
 	return sweep(lo, hi, n);
 }
