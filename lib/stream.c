@@ -430,7 +430,8 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 		rec->field[i] = f[i];
 	rec->nfield = n;
 	rec->canon = 1;
-	memcpy(r->path + common, f[1] + common, level - common);
+	for (i = common; i < level; i++)	/* a digit or two, mostly */
+		r->path[i] = f[1][i];
 	r->pathlen = level;
 	c->path = f[1];
 	c->level = level;
