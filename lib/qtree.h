@@ -35,6 +35,7 @@ int	 parselong(const char *, const char **, long long *);
 int	 coordok(double);
 char	*fmtint(char *, long long);
 FILE	*openin(const char *, const char **);
+void	 progress(int, const char *, ...);
 void	 closeout(void);
 
 /* fmtreal.c: the shortest decimal that reads back; buf holds 32 bytes */
@@ -105,6 +106,8 @@ struct qtreader {
 	size_t		 vleft;
 	long		 nrings;
 	int		 haveuniverse, havelevel, havecells;
+	int		 verbose;	/* report progress, as -v asks */
+	int		 deepest;	/* the deepest cell's level, -1 before one */
 	struct universe	 u;
 	double		 cellsize[QT_MAXLEVEL + 1];
 	struct qtcoord	 coord[QT_MAXLEVEL + 1][3][8];	/* stream.c */

@@ -53,6 +53,7 @@ qt_open(struct qtreader *r, FILE *fp, const char *name)
 		k[i].i = UINT64_MAX;
 	r->fp = fp;
 	r->name = name;
+	r->deepest = -1;
 	r->cap = 1 << 18;
 	r->buf = xmalloc(r->cap);
 }
@@ -223,6 +224,8 @@ parsecell(struct qtreader *r, struct qtrec *rec)
 		    c->path, r->pathlen > 0 ? r->pathlen : 1,
 		    r->pathlen > 0 ? r->path : ".");
 	setpath(r, c->path, c->level);
+	if (c->level > r->deepest)
+		r->deepest = c->level;
 	lim = ((unsigned long long)1 << c->level) - 1;
 	c->ix = intfield(r, rec->field[3], "ix", 0, lim);
 	c->iy = intfield(r, rec->field[4], "iy", 0, lim);
@@ -433,6 +436,8 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 	for (i = common; i < level; i++)	/* a digit or two, mostly */
 		r->path[i] = f[1][i];
 	r->pathlen = level;
+	if (level > r->deepest)
+		r->deepest = level;
 	c->path = f[1];
 	c->level = level;
 	c->ix = ix;
@@ -641,6 +646,19 @@ readline(struct qtreader *r, size_t *len)
 	}
 }
 
+/* Progress for -v: now and then, and at the end of the stream. */
+static void
+report(const struct qtreader *r, int force)
+{
+	if (!r->verbose)
+		return;
+	if (r->deepest >= 0)
+		progress(force, "%llu records read, deepest level %d", r->count,
+		    r->deepest);
+	else
+		progress(force, "%llu records read", r->count);
+}
+
 /*
  * Returns the next record, QT_EOF after a valid end record.  Every defect
  * of the stream is reported here with the file and line, and exits 1.
@@ -653,8 +671,10 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 
 	for (;;) {
 		if ((line = readline(r, &n)) == NULL) {
-			if (r->state == AFTER_END)
+			if (r->state == AFTER_END) {
+				report(r, 1);
 				return QT_EOF;
+			}
 			if (r->state == BEFORE_HEADER)
 				qt_fail(r, "empty input: not a qtree stream");
 			qt_fail(r, "truncated stream: no end record");
@@ -664,6 +684,8 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 		if (r->state == IN_BODY && n > 5 && fastcell(r, rec, line, n)) {
 			rec->line = line;
 			rec->len = n;
+			if ((r->count & 0xfffff) == 0)
+				report(r, 0);
 			return rec->kind;
 		}
 		if (strlen(line) != n)
@@ -688,6 +710,8 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 		default:
 			if (body(r, rec) == QT_EOF)
 				continue;	/* then EOF must follow */
+			if ((r->count & 0xfffff) == 0)
+				report(r, 0);
 			return rec->kind;
 		}
 	}

@@ -8,10 +8,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "qtree.h"
 
 const char *progname = "qtree";
+static time_t started;	/* for progress */
 
 /*
  * Every main calls this first.  A closed pipe must end a filter quietly, as
@@ -25,6 +27,7 @@ setprogname_(const char *argv0)
 
 	progname = p ? p + 1 : argv0;
 	signal(SIGPIPE, SIG_DFL);
+	started = time(NULL);
 }
 
 static void
@@ -286,4 +289,26 @@ closeout(void)
 {
 	if (fflush(stdout) == EOF || ferror(stdout) || fclose(stdout) == EOF)
 		die(1, "write error: %s", strerror(errno ? errno : EIO));
+}
+
+/*
+ * Progress for -v, on the standard error: at most a line a second, and
+ * always the one forced at the end; the seconds since the program started
+ * close each line.
+ */
+void
+progress(int force, const char *fmt, ...)
+{
+	static time_t last;
+	time_t now = time(NULL);
+	va_list ap;
+
+	if (!force && now == last)
+		return;
+	last = now;
+	fprintf(stderr, "%s: ", progname);
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, ", %ld s\n", (long)(now - started));
 }

@@ -92,7 +92,7 @@ mesh() {
 
 @test "a bad option prints the usage and exits 2" {
 	run -2 --separate-stderr qt2svg -x
-	[[ "$stderr" == *"usage: qt2svg [-nN] [-c classes] [-m margin] [-w width] [file]" ]]
+	[[ "$stderr" == *"usage: qt2svg [-nNv] [-c classes] [-m margin] [-w width] [file]" ]]
 	run -2 --separate-stderr qt2svg a b
 	[[ "$stderr" == *usage:* ]]
 }

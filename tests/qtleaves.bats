@@ -85,7 +85,7 @@ P 344" ]
 	run -2 --separate-stderr qtleaves -c '' /dev/null
 	[ "$stderr" = "qtleaves: -c: no classes given (a string of F, E and P)" ]
 	run -2 --separate-stderr qtleaves -x
-	[ "${stderr##*$'\n'}" = "usage: qtleaves [-n] [-c classes] [file]" ]
+	[ "${stderr##*$'\n'}" = "usage: qtleaves [-nv] [-c classes] [file]" ]
 	run -2 --separate-stderr qtleaves a b
 }
 

@@ -411,7 +411,7 @@ hanging_vertices 1" ]
 	[[ "$stderr" == "qtstats: cut.qt:"*": truncated stream: no end record" ]]
 	[ -z "$output" ]
 	run -2 --separate-stderr qtstats -x
-	[ "${stderr##*$'\n'}" = "usage: qtstats [-l] [file]" ]
+	[ "${stderr##*$'\n'}" = "usage: qtstats [-lv] [file]" ]
 }
 
 @test "qtstats(1): the examples print what the page says" {

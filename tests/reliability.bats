@@ -175,3 +175,19 @@ bad_case() {
 		grep '^leaf' canon.qt | cmp - leaves
 	done
 }
+
+@test "-v: every reader reports records read, deepest level and seconds" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 7 > t.qt
+	n=$(awk '$1 != "qtree" && $1 != "end" && $1 !~ /^#/' t.qt | wc -l)
+	deepest=$(awk '$1 == "leaf" && $3 > d { d = $3 } END { print d }' t.qt)
+	[ "$deepest" = 7 ]
+	for p in qtleaves qtstats qt2svg; do
+		run -0 --separate-stderr $p t.qt
+		[ -z "$stderr" ]
+		quiet=$output
+		run -0 --separate-stderr $p -v t.qt
+		[ "$output" = "$quiet" ]
+		last=${stderr_lines[${#stderr_lines[@]}-1]}
+		[[ "$last" =~ ^$p:\ $n\ records\ read,\ deepest\ level\ $deepest,\ [0-9]+\ s$ ]]
+	done
+}

@@ -94,7 +94,7 @@ static unsigned long long nleaflabels;
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: qt2svg [-nN] [-c classes] [-m margin] "
+	fprintf(stderr, "usage: qt2svg [-nNv] [-c classes] [-m margin] "
 	    "[-w width] [file]\n");
 	exit(2);
 }
@@ -768,11 +768,11 @@ main(int argc, char *argv[])
 	enum qtkind kind;
 	const char *name;
 	FILE *fp;
-	int ch, i;
+	int ch, i, verbose = 0;
 
 	setprogname_(argv[0]);
 	classes("FEP");
-	while ((ch = getopt(argc, argv, "c:m:nNw:")) != -1)
+	while ((ch = getopt(argc, argv, "c:m:nNvw:")) != -1)
 		switch (ch) {
 		case 'c':
 			memset(drawn, 0, sizeof(drawn));
@@ -786,6 +786,9 @@ main(int argc, char *argv[])
 			break;
 		case 'N':
 			Nflag = 1;
+			break;
+		case 'v':
+			verbose = 1;
 			break;
 		case 'w':
 			width = pixels(ch, optarg, 1);
@@ -802,6 +805,7 @@ main(int argc, char *argv[])
 
 	fp = openin(argc == 1 ? argv[0] : "-", &name);
 	qt_open(&r, fp, name);
+	r.verbose = verbose;
 	while ((kind = qt_read(&r, &rec)) != QT_EOF) {
 		switch (kind) {
 		case QT_UNIVERSE:

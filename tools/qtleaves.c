@@ -31,12 +31,12 @@
 
 static struct universe u;
 static char keep[256];
-static int mesh;
+static int mesh, verbose;
 
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: qtleaves [-n] [-c classes] [file]\n");
+	fprintf(stderr, "usage: qtleaves [-nv] [-c classes] [file]\n");
 	exit(2);
 }
 
@@ -337,13 +337,16 @@ main(int argc, char *argv[])
 
 	setprogname_(argv[0]);
 	setclasses("FP");
-	while ((ch = getopt(argc, argv, "c:n")) != -1)
+	while ((ch = getopt(argc, argv, "c:nv")) != -1)
 		switch (ch) {
 		case 'c':
 			setclasses(optarg);
 			break;
 		case 'n':
 			mesh = 1;
+			break;
+		case 'v':
+			verbose = 1;
 			break;
 		default:
 			usage();
@@ -355,6 +358,7 @@ main(int argc, char *argv[])
 
 	fp = openin(argc == 1 ? argv[0] : "-", &name);
 	qt_open(&r, fp, name);
+	r.verbose = verbose;
 	memset(&ring, 0, sizeof(ring));
 	qt_header();
 	while ((kind = qt_read(&r, &rec)) != QT_EOF) {

@@ -13,7 +13,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "qtree.h"
@@ -36,7 +35,6 @@ static unsigned char *masks[QT_MAXLEVEL + 2];
 
 static unsigned long long ncells;
 static int deepest;
-static time_t started, lastreport;
 
 static void
 usage(void)
@@ -76,15 +74,11 @@ reserve(int level, size_t n)
 }
 
 static void
-progress(int force)
+report(int force)
 {
-	time_t now = time(NULL);
-
-	if (!verbose || (!force && now == lastreport))
-		return;
-	lastreport = now;
-	fprintf(stderr, "qtsplit: %llu cells, deepest level %d, %ld s\n",
-	    ncells, deepest, (long)(now - started));
+	if (verbose)
+		progress(force, "%llu cells, deepest level %d", ncells,
+		    deepest);
 }
 
 /*
@@ -174,7 +168,7 @@ emit(int level, const struct text *ix, const struct text *iy,
 	if (level > deepest)
 		deepest = level;
 	if ((++ncells & 0xfffff) == 0)
-		progress(0);
+		report(0);
 }
 
 /*
@@ -509,7 +503,6 @@ main(int argc, char *argv[])
 		die(2, "-m %d is deeper than the maximum level %d", minlevel,
 		    maxlevel);
 
-	started = lastreport = time(NULL);
 	for (i = 0; i <= QT_MAXLEVEL; i++) {
 		step[i] = ldexp(u.size, -i);
 		settext(&sizetext[i], step[i]);
@@ -570,7 +563,7 @@ main(int argc, char *argv[])
 		visit(level, ix, iy, &tix, &tiy, &x, &y, n, inside);
 	}
 	qt_end();
-	progress(1);
+	report(1);
 	closeout();
 	return 0;
 }

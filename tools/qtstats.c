@@ -70,7 +70,7 @@ static int havemesh;
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: qtstats [-l] [file]\n");
+	fprintf(stderr, "usage: qtstats [-lv] [file]\n");
 	exit(2);
 }
 
@@ -785,14 +785,17 @@ main(int argc, char *argv[])
 {
 	struct qtreader r;
 	const char *name;
-	int ch, table = 0;
+	int ch, table = 0, verbose = 0;
 	FILE *fp;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "l")) != -1)
+	while ((ch = getopt(argc, argv, "lv")) != -1)
 		switch (ch) {
 		case 'l':
 			table = 1;
+			break;
+		case 'v':
+			verbose = 1;
 			break;
 		default:
 			usage();
@@ -806,6 +809,7 @@ main(int argc, char *argv[])
 	mo_init(&ringmo);
 	fp = openin(argc == 1 ? argv[0] : "-", &name);
 	qt_open(&r, fp, name);
+	r.verbose = verbose;
 	readstream(&r);
 	qt_close(&r);
 	report(table);
