@@ -290,6 +290,22 @@ if [ -n "$big" ]; then
 	rm -f "$tmp/big.qt"
 fi
 
+# Instructions a record, a figure that the machine's noise does not move:
+# callgrind on the level-14 stream of the same star.
+if command -v valgrind >/dev/null 2>&1 && [ -f "$tmp/star-1000.qt" ]; then
+	./qtsplit -l 14 "$tmp/star-1000.qt" >"$tmp/mid.qt"
+	nrec=$(grep -cv -e '^qtree ' -e '^end ' -e '^#' "$tmp/mid.qt")
+	for tool in qtleaves qtstats qt2svg; do
+		[ -x "./$tool" ] || continue
+		ir=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null \
+		    "./$tool" "$tmp/mid.qt" 2>&1 >/dev/null |
+		    awk '/refs:/ { gsub(",", "", $NF); print $NF }')
+		[ -n "$ir" ] && echo "# $tool: $((ir / nrec)) instructions a" \
+		    "record (callgrind; star N=1000, level 14, $nrec records)"
+	done
+	rm -f "$tmp/mid.qt"
+fi
+
 echo
 echo "# targets of issue 3"
 awk -f - "$tmp/rows" <<'EOF'
