@@ -113,6 +113,7 @@ struct qtreader {
 	struct qtcoord	 coord[QT_MAXLEVEL + 1][3][8];	/* stream.c */
 	char		 path[QT_MAXLEVEL];	/* the last cell's */
 	int		 pathlen;
+	int		 lastleaf;	/* whether the last cell is a leaf */
 	uint64_t	 pathix[QT_MAXLEVEL + 1], pathiy[QT_MAXLEVEL + 1];
 };
 

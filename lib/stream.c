@@ -184,6 +184,14 @@ follows(const struct qtreader *r, const char *path, int n)
 	return k < r->pathlen ? k < n && path[k] > r->path[k] : n > k;
 }
 
+/* Whether a cell at path, of length n, lies inside the last cell, a leaf. */
+static int
+inleaf(const struct qtreader *r, const char *path, int n)
+{
+	return r->havecells && r->lastleaf && n > r->pathlen &&
+	    memcmp(path, r->path, r->pathlen) == 0;
+}
+
 /* Keeps the path of the cell just read, and its prefixes' columns and rows. */
 static void
 setpath(struct qtreader *r, const char *path, int n)
@@ -219,11 +227,16 @@ parsecell(struct qtreader *r, struct qtrec *rec)
 	c->level = intfield(r, rec->field[2], "level", 0, QT_MAXLEVEL);
 	if (pathcell(c->path, c->level, &ix, &iy) < 0)
 		qt_fail(r, "path %s does not fit level %d", c->path, c->level);
+	if (inleaf(r, c->path, c->level))
+		qt_fail(r, "cell %s lies inside leaf %.*s", c->path,
+		    r->pathlen > 0 ? r->pathlen : 1,
+		    r->pathlen > 0 ? r->path : ".");
 	if (!follows(r, c->level > 0 ? c->path : "", c->level))
 		qt_fail(r, "cell %s does not follow cell %.*s in preorder",
 		    c->path, r->pathlen > 0 ? r->pathlen : 1,
 		    r->pathlen > 0 ? r->path : ".");
 	setpath(r, c->path, c->level);
+	r->lastleaf = rec->kind == QT_LEAF;
 	if (c->level > r->deepest)
 		r->deepest = c->level;
 	lim = ((unsigned long long)1 << c->level) - 1;
@@ -362,7 +375,8 @@ skippath(struct qtreader *r, char **pp, const char *end, uint64_t *ix,
 	}
 	if (j == 0 || p[j] != ' ')
 		return -1;
-	if (r->havecells && (j == k || (k < n && p[k] < r->path[k])))
+	if (r->havecells && (j == k || (k < n ? p[k] < r->path[k] :
+	    r->lastleaf)))
 		return -1;
 	p[j] = '\0';
 	*pp = p + j + 1;
@@ -436,6 +450,7 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 	for (i = common; i < level; i++)	/* a digit or two, mostly */
 		r->path[i] = f[1][i];
 	r->pathlen = level;
+	r->lastleaf = rec->kind == QT_LEAF;
 	if (level > r->deepest)
 		r->deepest = level;
 	c->path = f[1];
