@@ -241,7 +241,10 @@ hanging_vertices 1" ]
 	qtsplit -l 18 -r 001222 a.qt > t4.qt
 	awk -v shape=star -v n=300 -v m=0 -f "$TOP/tools/genpoly.awk" |
 	    polyread | qtsplit -l 9 > t5.qt
-	for t in t1 t2 t3 t4 t5; do
+	# some leaves only: neighbours across the missing ones do not count
+	qtleaves -c FP t2.qt > t6.qt
+	qtleaves -c FE t5.qt > t7.qt
+	for t in t1 t2 t3 t4 t5 t6 t7; do
 		# for each leaf and side, the leaf holding the same-size cell
 		# across it, found by going up; a finer neighbour finds this one
 		want=$(awk '

@@ -12,9 +12,7 @@
 
 #include "qtree.h"
 
-#define GRID		QT_MAXLEVEL	/* leaves are kept on this grid */
-#define LEVELSHIFT	58		/* level bits above the coordinate */
-#define COORDMASK	((UINT64_C(1) << LEVELSHIFT) - 1)
+#define GRID		QT_MAXLEVEL	/* side lengths are measured on this grid */
 
 enum { F, E, P };
 
@@ -41,15 +39,34 @@ static struct levelstat lev[QT_MAXLEVEL + 1];
 static int deepest = -1;
 
 /*
- * Leaves on the level-GRID grid, for the level jumps: x is the lower left
- * column, y the row with the level in its top bits.
+ * Level jumps between side neighbours, found as the leaves stream past.
+ * Two leaves that share a side meet across a middle line of their lowest
+ * common ancestor.  So each subtree, once done, is summed up by the levels
+ * of the leaves along its four sides, in order; its parent walks the
+ * facing sides of its children together, and its own sides are theirs,
+ * end to end.  Leaves come in preorder, so a subtree is done when a leaf
+ * outside it arrives; a child that holds no leaf (a stream may hold some
+ * leaves only) is a gap along its parent's sides.  The work is a few steps
+ * per leaf and the memory the sides of the open subtrees.
  */
-struct lrec {
-	uint64_t	x, y;
+enum { WEST, EAST, SOUTH, NORTH };
+#define GAP	0x80	/* a stretch of side without leaves: GAP | level */
+
+struct side {
+	unsigned char	*v;	/* levels, south to north or west to east */
+	size_t		 n, cap;
 };
 
-static struct lrec *leaves;
-static size_t nleaves, leafcap;
+struct subtree {
+	struct side	side[4];
+	int		 done;
+};
+
+/* child[d]: the children of the last leaf's ancestor at depth d */
+static struct subtree child[QT_MAXLEVEL][4];
+static char lastpath[QT_MAXLEVEL];
+static int lastlen = -1;
+static int maxjump;
 
 /* The mesh records. */
 struct etype {
@@ -138,11 +155,149 @@ ringvertex(struct qtreader *r, struct point v)
 	}
 }
 
+/* Sets side s to a's entries, then b's. */
+static void
+joinsides(struct side *s, const struct side *a, const struct side *b)
+{
+	size_t i;
+
+	if (a->n + b->n > s->cap) {
+		s->cap = 2 * (a->n + b->n);
+		s->v = xreallocarray(s->v, s->cap, 1);
+	}
+	/* mostly a few entries: a call to memcpy would cost more */
+	for (i = 0; i < a->n; i++)
+		s->v[i] = a->v[i];
+	for (i = 0; i < b->n; i++)
+		s->v[a->n + i] = b->v[i];
+	s->n = a->n + b->n;
+}
+
+/* Sets every side of t to the one entry v. */
+static void
+oneentry(struct subtree *t, unsigned char v)
+{
+	int k;
+
+	for (k = 0; k < 4; k++) {
+		if (t->side[k].cap == 0) {
+			t->side[k].cap = 16;
+			t->side[k].v = xmalloc(t->side[k].cap);
+		}
+		t->side[k].v[0] = v;
+		t->side[k].n = 1;
+	}
+}
+
+/* The length of a side's entry, on the level-GRID grid. */
+static uint64_t
+stretch(unsigned char v)
+{
+	return (uint64_t)1 << (GRID - (v & ~GAP));
+}
+
+/* Two facing sides of the same length, walked together. */
+static void
+facing(const struct side *a, const struct side *b)
+{
+	size_t i = 0, j = 0;
+	uint64_t ea, eb, e;
+
+	if (a->n == 1 && b->n == 1) {	/* the most common case, two leaves */
+		int la = a->v[0], lb = b->v[0];
+
+		if (!((la | lb) & GAP) && abs(la - lb) > maxjump)
+			maxjump = abs(la - lb);
+		return;
+	}
+	ea = stretch(a->v[0]);
+	eb = stretch(b->v[0]);
+	for (;;) {
+		int la = a->v[i], lb = b->v[j];
+
+		if (!((la | lb) & GAP) && abs(la - lb) > maxjump)
+			maxjump = abs(la - lb);
+		e = ea < eb ? ea : eb;
+		if (ea == e) {
+			if (++i == a->n)
+				break;
+			ea += stretch(a->v[i]);
+		}
+		if (eb == e) {
+			if (++j == b->n)
+				break;
+			eb += stretch(b->v[j]);
+		}
+	}
+}
+
+/*
+ * The last leaf's ancestor at depth d is done: its children meet, and it
+ * takes its place among its siblings (the root has none).
+ */
+static void
+closedepth(int d)
+{
+	struct subtree *c = child[d], *t;
+	int i;
+
+	for (i = 0; i < 4; i++)
+		if (!c[i].done)
+			oneentry(&c[i], GAP | (d + 1));
+	/* children 0 1 / 2 3 are south-west, south-east, north-west, north-east */
+	facing(&c[0].side[EAST], &c[1].side[WEST]);
+	facing(&c[2].side[EAST], &c[3].side[WEST]);
+	facing(&c[0].side[NORTH], &c[2].side[SOUTH]);
+	facing(&c[1].side[NORTH], &c[3].side[SOUTH]);
+	if (d > 0) {
+		t = &child[d - 1][lastpath[d - 1] - '0'];
+		joinsides(&t->side[WEST], &c[0].side[WEST], &c[2].side[WEST]);
+		joinsides(&t->side[EAST], &c[1].side[EAST], &c[3].side[EAST]);
+		joinsides(&t->side[SOUTH], &c[0].side[SOUTH], &c[1].side[SOUTH]);
+		joinsides(&t->side[NORTH], &c[2].side[NORTH], &c[3].side[NORTH]);
+		t->done = 1;
+	}
+	for (i = 0; i < 4; i++)
+		c[i].done = 0;
+}
+
+/* A leaf at path, of the given level; NULL at the end of the stream. */
+static void
+jumpleaf(const char *path, int level)
+{
+	int d, k = 0;
+	uint64_t a, b;
+
+	if (path != NULL) {
+		/* eight digits at a time, then one */
+		while (k + 8 <= lastlen && k + 8 <= level) {
+			memcpy(&a, path + k, 8);
+			memcpy(&b, lastpath + k, 8);
+			if (a != b)
+				break;
+			k += 8;
+		}
+		while (k < lastlen && k < level && path[k] == lastpath[k])
+			k++;
+	}
+	/* the reader saw to it that path follows lastpath in preorder */
+	for (d = lastlen - 1; d >= k && d >= 0; d--)
+		if (d > k || path == NULL)
+			closedepth(d);
+	if (path == NULL || level == 0)
+		return;
+	oneentry(&child[level - 1][path[level - 1] - '0'], level);
+	child[level - 1][path[level - 1] - '0'].done = 1;
+	for (d = k; d < level; d++)
+		lastpath[d] = path[d];
+	lastlen = level;
+}
+
 static void
 addcell(const struct cell *c)
 {
 	struct levelstat *s = &lev[c->level];
-	int k, shift = GRID - c->level;
+	int k;
 
 	if (c->level > deepest)
 		deepest = c->level;
@@ -154,13 +309,7 @@ addcell(const struct cell *c)
 	s->leaves[k]++;
 	add128(&s->sx[k], 2 * c->ix + 1);
 	add128(&s->sy[k], 2 * c->iy + 1);
-	if (nleaves == leafcap) {
-		leafcap = leafcap ? 2 * leafcap : 1024;
-		leaves = xreallocarray(leaves, leafcap, sizeof(*leaves));
-	}
-	leaves[nleaves].x = c->ix << shift;
-	leaves[nleaves++].y = c->iy << shift |
-	    (uint64_t)c->level << LEVELSHIFT;
+	jumpleaf(c->path, c->level);
 }
 
 static unsigned long long
@@ -308,146 +457,6 @@ readstream(struct qtreader *r)
 			break;
 		}
 	}
-}
-
-/*
- * Sorts by x, stably, least significant digit first.  That sorts by
- * (x, y): the leaves come in preorder, and preorder puts the cells whose
- * left sides, or right sides, lie on one line in the order of their y
- * (the first cell to differ between two of them is south of the other's,
- * the line being no further west than their split); and the second axis
- * starts from an array sorted by (y, x).  The keys are multiples of
- * 2^(GRID - deepest) up to 2^GRID, so only their deepest + 1 bits above
- * those are sorted on, in the fewest digits of at most 16 bits; the counts
- * of every digit come from one pass, and a digit that is the same for all
- * takes none.
- */
-#define MAXDIGITS	((GRID + 16) / 16)
-
-static void
-sortrecs(struct lrec *a, struct lrec *tmp, size_t n)
-{
-	static size_t count[MAXDIGITS][1 << 16];
-	struct lrec *src = a, *dst = tmp, *t;
-	int low = GRID - deepest, ndigit = (deepest + 16) / 16;
-	int width = (deepest + ndigit) / ndigit, d;
-	uint64_t mask = ((uint64_t)1 << width) - 1;
-	size_t i, sum;
-
-	if (n == 0)
-		return;
-	memset(count, 0, ndigit * sizeof(count[0]));
-	for (i = 0; i < n; i++)
-		for (d = 0; d < ndigit; d++)
-			count[d][a[i].x >> (low + width * d) & mask]++;
-	for (d = 0; d < ndigit; d++) {
-		int shift = low + width * d;
-		size_t *c = count[d];
-
-		if (c[src[0].x >> shift & mask] == n)
-			continue;
-		for (i = 0, sum = 0; i <= mask; i++) {
-			size_t k = c[i];
-
-			c[i] = sum;
-			sum += k;
-		}
-		for (i = 0; i < n; i++)
-			dst[c[src[i].x >> shift & mask]++] = src[i];
-		t = src, src = dst, dst = t;
-	}
-	if (src != a)
-		memcpy(a, src, n * sizeof(*a));
-}
-
-static uint64_t
-span(const struct lrec *r)
-{
-	return (uint64_t)1 << (GRID - (int)(r->y >> LEVELSHIFT));
-}
-
-/*
- * lo holds the cells' sides at their low x, hi at their high x, both
- * sorted by x then y.  On each line x the sides of the cells to its left
- * and to its right are disjoint runs in y: a merge finds the pairs that
- * overlap over a positive length, side neighbours.
- */
-static int
-sweep(const struct lrec *lo, const struct lrec *hi, size_t n)
-{
-	size_t i = 0, j = 0;
-	int best = 0;
-
-	while (i < n && j < n) {
-		uint64_t a0, a1, b0, b1;
-		int jump;
-
-		if (hi[j].x < lo[i].x) {
-			j++;
-			continue;
-		}
-		if (lo[i].x < hi[j].x) {
-			i++;
-			continue;
-		}
-		a0 = lo[i].y & COORDMASK;
-		a1 = a0 + span(&lo[i]);
-		b0 = hi[j].y & COORDMASK;
-		b1 = b0 + span(&hi[j]);
-		if (a0 < b1 && b0 < a1) {
-			jump = (int)(lo[i].y >> LEVELSHIFT) -
-			    (int)(hi[j].y >> LEVELSHIFT);
-			if (abs(jump) > best)
-				best = abs(jump);
-		}
-		if (a1 <= b1)
-			i++;
-		if (b1 <= a1)
-			j++;
-	}
-	return best;
-}
-
-/* Builds the high sides from the low ones, then sweeps. */
-static int
-sweepaxis(struct lrec *lo, struct lrec *hi, struct lrec *tmp, size_t n)
-{
-	size_t i;
-
-	for (i = 0; i < n; i++) {
-		hi[i].x = lo[i].x + span(&lo[i]);
-		hi[i].y = lo[i].y;
-	}
-	sortrecs(lo, tmp, n);
-	sortrecs(hi, tmp, n);
-	return sweep(lo, hi, n);
-}
-
-static int
-maxjump(void)
-{
-	struct lrec *hi, *tmp;
-	size_t i;
-	int best, across;
-
-	if (nleaves < 2)
-		return 0;
-	hi = xreallocarray(NULL, nleaves, sizeof(*hi));
-	tmp = xreallocarray(NULL, nleaves, sizeof(*tmp));
-	best = sweepaxis(leaves, hi, tmp, nleaves);
-	/* the same again across rows: swap x and y, keeping the level */
-	for (i = 0; i < nleaves; i++) {
-		uint64_t x = leaves[i].x, y = leaves[i].y;
-
-		leaves[i].x = y & COORDMASK;
-		leaves[i].y = x | (y & ~COORDMASK);
-	}
-	across = sweepaxis(leaves, hi, tmp, nleaves);
-	if (across > best)
-		best = across;
-	free(hi);
-	free(tmp);
-	return best;
 }
 
 /* Vertex numbers sorted by (x, y) or by (y, x); then ties by number. */
@@ -724,8 +733,10 @@ report(int table)
 			putcount("uniform_cells", 1ULL << 2 * deepest);
 		else
 			putreal("uniform_cells", uniform);
-		putreal("saving", (double)nleaves / uniform);
-		putcount("max_level_jump", maxjump());
+		putreal("saving", (double)(leafn[F] + leafn[E] + leafn[P]) /
+		    uniform);
+		jumpleaf(NULL, 0);
+		putcount("max_level_jump", maxjump);
 		xs_init(&full);
 		xs_init(&fullpart);
 		leafarea(&full, 0);
