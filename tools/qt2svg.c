@@ -133,18 +133,57 @@ fmthund(char *p, long long v)
 {
 	unsigned long long a = v < 0 ? -(unsigned long long)v :
 	    (unsigned long long)v;
+	uint32_t q, frac = a % 100;
+	int i, n;
 
 	if (v < 0)
 		*p++ = '-';
-	p = fmtint(p, (long long)(a / 100));
-	if (a % 100 != 0) {
+	if (a >= 100000000)	/* a million pixels or more: rare */
+		p = fmtint(p, (long long)(a / 100));
+	else {
+		/* four numbers a leaf: fmtint's generality would show */
+		q = (uint32_t)(a / 100);
+		n = 1 + (q >= 10) + (q >= 100) + (q >= 1000) + (q >= 10000) +
+		    (q >= 100000);
+		for (i = n - 1; i >= 0; i--) {
+			p[i] = '0' + q % 10;
+			q /= 10;
+		}
+		p += n;
+	}
+	if (frac != 0) {
 		*p++ = '.';
-		*p++ = '0' + a % 100 / 10;
-		if (a % 10 != 0)
-			*p++ = '0' + a % 10;
+		*p++ = '0' + frac / 10;
+		if (frac % 10 != 0)
+			*p++ = '0' + frac % 10;
 	}
 	*p = '\0';
 	return p;
+}
+/*
+ * The texts of the last numbers of each kind, per level: neighbours share
+ * columns, rows and sides, and formatting is most of a leaf's cost.
+ */
+struct numtext {
+	long long	v;
+	char		s[24];	/* copied whole */
+	size_t		len;	/* 0 when empty */
+};
+
+#define NKEPT	8	/* columns or rows kept per level */
+static struct numtext colx[QT_MAXLEVEL + 1][NKEPT];
+static struct numtext rowy[QT_MAXLEVEL + 1][NKEPT];
+static struct numtext side[QT_MAXLEVEL + 1][3];
+
+static char *
+putnum(char *p, struct numtext *t, long long v)
+{
+	if (t->len == 0 || t->v != v) {
+		t->v = v;
+		t->len = fmthund(t->s, v) - t->s;
+	}
+	memcpy(p, t->s, sizeof(t->s));
+	return p + t->len;
 }
 
 static void
@@ -168,11 +207,22 @@ putxy(struct buf *b, long long x, long long y)
 static long long
 hund(double px)
 {
+	double y, frac;
+	long long r;
+
 	if (px > 1e12)
 		px = 1e12;
 	if (px < -1e12)
 		px = -1e12;
-	return llround(px * 100);
+	/* llround, halves away from zero; y - r is exact below 2^52 */
+	y = px * 100;
+	r = (long long)y;
+	frac = y - (double)r;
+	if (frac >= 0.5)
+		r++;
+	else if (frac <= -0.5)
+		r--;
+	return r;
 }
 
 static long long
@@ -256,18 +306,18 @@ leaf(struct qtreader *r, const struct qtrec *rec)
 	y1 = pixely(u.y0 + (double)(c->iy + 1) * cellside[c->level]);
 	if (nleaves[k] > 0 && nleaves[k] % CHUNK == 0)
 		putstr(b, "\"/>\n<path d=\"");
-	/* five numbers of at most 22 bytes, and five letters and a space */
-	p = room(b, 5 * 22 + 6);
+	/* five numbers, each copied as a whole text, five letters, a space */
+	p = room(b, 5 * sizeof(struct numtext) + 6);
 	*p++ = 'M';
-	p = fmthund(p, x0);
+	p = putnum(p, &colx[c->level][c->ix % NKEPT], x0);
 	*p++ = ' ';
-	p = fmthund(p, y1);
+	p = putnum(p, &rowy[c->level][c->iy % NKEPT], y1);
 	*p++ = 'h';
-	p = fmthund(p, x1 - x0);
+	p = putnum(p, &side[c->level][0], x1 - x0);
 	*p++ = 'v';
-	p = fmthund(p, y0 - y1);
+	p = putnum(p, &side[c->level][1], y0 - y1);
 	*p++ = 'h';
-	p = fmthund(p, x0 - x1);
+	p = putnum(p, &side[c->level][2], x0 - x1);
 	*p++ = 'z';
 	b->len = p - b->p;
 	nleaves[k]++;
