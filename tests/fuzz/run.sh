@@ -1,6 +1,6 @@
 #!/bin/sh
 # Fuzzes every parser: polyread in each of its formats and the qtree(5)
-# reader (through qtsplit), each built with AFL++ instrumentation and the
+# reader, on rings through qtsplit and on cells through qtstats, each built with AFL++ instrumentation and the
 # address and undefined-behaviour sanitizers, for FUZZTIME seconds (default
 # 60) from the seed corpus in tests/fuzz/seeds.  Prints executions, crashes
 # and hangs per target, and fails when anything crashed or hung; the inputs
@@ -22,6 +22,7 @@ build() {
 }
 build polyread
 build qtsplit
+build qtstats
 
 # Containers have no CPU governor to check, may refuse CPU binding, and
 # may pipe core dumps elsewhere: none of that matters to a short run.
@@ -32,9 +33,10 @@ export AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES AFL_SKIP_CRASHES
 
 mkdir -p "$out"
 bad=0
-for target in brep xy wkt poly qtree; do
+for target in brep xy wkt poly qtree cells; do
 	case $target in
 	qtree)	set -- tests/fuzz/qtsplit -l 3 @@ ;;
+	cells)	set -- tests/fuzz/qtstats -l @@ ;;
 	*)	set -- tests/fuzz/polyread -f "$target" @@ ;;
 	esac
 	rm -rf "${out:?}/$target"
