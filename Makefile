@@ -94,6 +94,6 @@ uninstall:
 
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
-	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit
+	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats
 
 .PHONY: all test demo bench sanitize fuzz install uninstall clean
