@@ -358,15 +358,20 @@ skippath(struct qtreader *r, char **pp, const char *end, uint64_t *ix,
 		*common = 0;
 		return 0;
 	}
-	while (k + 8 <= n && p + k + 8 <= end) {
-		memcpy(&a, p + k, 8);
-		memcpy(&b, r->path + k, 8);
-		if (a != b)
-			break;
-		k += 8;
+	/* mostly a sibling or a child of the last cell */
+	if (n > 0 && p + n <= end && sametext(p, r->path, n - 1))
+		k = n - 1 + (p[n - 1] == r->path[n - 1]);
+	else {
+		while (k + 8 <= n && p + k + 8 <= end) {
+			memcpy(&a, p + k, 8);
+			memcpy(&b, r->path + k, 8);
+			if (a != b)
+				break;
+			k += 8;
+		}
+		while (k < n && p[k] == r->path[k])
+			k++;
 	}
-	while (k < n && p[k] == r->path[k])
-		k++;
 	/* the prefixes past k are the new path's from here on */
 	for (j = k; (d = (unsigned char)p[j] - '0') <= 3 && j < QT_MAXLEVEL;
 	    j++) {
