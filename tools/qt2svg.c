@@ -173,7 +173,7 @@ struct numtext {
 #define NKEPT	8	/* columns or rows kept per level */
 static struct numtext colx[QT_MAXLEVEL + 1][NKEPT];
 static struct numtext rowy[QT_MAXLEVEL + 1][NKEPT];
-static struct numtext side[QT_MAXLEVEL + 1][3];
+static struct numtext side[QT_MAXLEVEL + 1][3][2];	/* two widths a level */
 
 static char *
 putnum(char *p, struct numtext *t, long long v)
@@ -313,11 +313,11 @@ leaf(struct qtreader *r, const struct qtrec *rec)
 	*p++ = ' ';
 	p = putnum(p, &rowy[c->level][c->iy % NKEPT], y1);
 	*p++ = 'h';
-	p = putnum(p, &side[c->level][0], x1 - x0);
+	p = putnum(p, &side[c->level][0][(x1 - x0) & 1], x1 - x0);
 	*p++ = 'v';
-	p = putnum(p, &side[c->level][1], y0 - y1);
+	p = putnum(p, &side[c->level][1][(y0 - y1) & 1], y0 - y1);
 	*p++ = 'h';
-	p = putnum(p, &side[c->level][2], x0 - x1);
+	p = putnum(p, &side[c->level][2][(x0 - x1) & 1], x0 - x1);
 	*p++ = 'z';
 	b->len = p - b->p;
 	nleaves[k]++;
