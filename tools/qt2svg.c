@@ -160,6 +160,7 @@ fmthund(char *p, long long v)
 	*p = '\0';
 	return p;
 }
+
 /*
  * The texts of the last numbers of each kind, per level: neighbours share
  * columns, rows and sides, and formatting is most of a leaf's cost.
