@@ -402,3 +402,18 @@ ring 3 hole 3" ]
 	    -l 6 back.poly > p.qt
 	diff -u r.qt p.qt
 }
+
+@test "-v reports vertices read, the checks passed and the rings written" {
+	run -0 --separate-stderr polyread "$SAMPLES/amoeba.brep"
+	[ -z "$stderr" ]
+	quiet=$output
+	run -0 --separate-stderr polyread -v "$SAMPLES/amoeba.brep"
+	[ "$output" = "$quiet" ]
+	# the amoeba's vertices, counted from the output's v records
+	n=$(printf '%s\n' "$output" | grep -c '^v ')
+	[ "${#stderr_lines[@]}" -eq 4 ]
+	[[ "${stderr_lines[0]}" =~ ^polyread:\ $n\ vertices\ in\ 2\ rings\ read,\ [0-9]+\ s$ ]]
+	[[ "${stderr_lines[1]}" =~ ^polyread:\ no\ two\ edges\ cross\ or\ overlap,\ [0-9]+\ s$ ]]
+	[[ "${stderr_lines[2]}" =~ ^polyread:\ nesting\ and\ connectivity\ checked,\ [0-9]+\ s$ ]]
+	[[ "${stderr_lines[3]}" =~ ^polyread:\ 2\ rings\ written,\ [0-9]+\ s$ ]]
+}

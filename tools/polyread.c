@@ -33,6 +33,8 @@ struct inring {
 
 static struct inring *rings;
 static size_t nrings, ringcap;
+static unsigned long long nvertices;
+static int verbose;
 static long npolys;
 
 static struct point *seeds;	/* Triangle hole points */
@@ -56,7 +58,7 @@ struct src {
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: polyread [-f format] [-l level] "
+	fprintf(stderr, "usage: polyread [-v] [-f format] [-l level] "
 	    "[-u x0,y0,size] [file ...]\n");
 	exit(2);
 }
@@ -95,6 +97,8 @@ addvertex(struct src *s, struct inring *r, double x, double y, long line)
 	r->v[r->n].x = x;
 	r->v[r->n].y = y;
 	r->line[r->n++] = line;
+	if ((++nvertices & 0xfffff) == 0 && verbose)
+		progress(0, "%llu vertices read", nvertices);
 }
 
 static void
@@ -1554,7 +1558,7 @@ main(int argc, char *argv[])
 	int ch, haveu = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "f:l:u:")) != -1)
+	while ((ch = getopt(argc, argv, "f:l:u:v")) != -1)
 		switch (ch) {
 		case 'f':
 			if (strcmp(optarg, "brep") == 0)
@@ -1578,6 +1582,9 @@ main(int argc, char *argv[])
 		case 'u':
 			parseuniverse(optarg);
 			haveu = 1;
+			break;
+		case 'v':
+			verbose = 1;
 			break;
 		default:
 			usage();
@@ -1613,15 +1620,22 @@ main(int argc, char *argv[])
 		free(s.buf);
 	}
 
+	if (verbose)
+		progress(1, "%llu vertices in %zu rings read", nvertices,
+		    nrings);
 	for (i = 0; i < nrings; i++) {
 		tidy(&rings[i]);
 		checkring(&rings[i]);
 	}
 	checkedges();
+	if (verbose)
+		progress(1, "no two edges cross or overlap");
 	nesting();
 	checkroles();
 	connectivity();
 	checkseeds();
+	if (verbose)
+		progress(1, "nesting and connectivity checked");
 	if (haveu) {
 		u = given;
 		checkuniverse(&u, "given with -u");
@@ -1651,6 +1665,8 @@ main(int argc, char *argv[])
 		qt_ring(&out);
 	}
 	qt_end();
+	if (verbose)
+		progress(1, "%zu rings written", nrings);
 	closeout();
 	return 0;
 }
