@@ -137,6 +137,7 @@ enum qtkind qt_read(struct qtreader *, struct qtrec *);
 void	 qt_close(struct qtreader *);
 void	 qt_fail(struct qtreader *, const char *, ...);
 int	 qt_split(struct qtreader *, char *, char **, int);
+int	 pathprefix(const char *, int, const char *, int);
 double	 qt_real(struct qtreader *, const char *, const char *);
 
 void	 qt_header(void);

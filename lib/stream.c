@@ -169,18 +169,45 @@ coordfield(struct qtreader *r, const char *text, int level, int axis,
 }
 
 /*
+ * The length of the longest common prefix of a and b, of at most na and nb
+ * bytes: paths, which in preorder mostly share all but their last digit or
+ * two, so they are compared eight bytes at a time, the last eight too.
+ */
+int
+pathprefix(const char *a, int na, const char *b, int nb)
+{
+	int k = 0, n = na < nb ? na : nb;
+	uint64_t x, y;
+
+	while (k + 8 <= n) {
+		memcpy(&x, a + k, 8);
+		memcpy(&y, b + k, 8);
+		if (x != y)
+			break;
+		k += 8;
+	}
+	if (k < n && k + 8 > n && n >= 8) {	/* no mismatch so far */
+		memcpy(&x, a + n - 8, 8);	/* overlaps the last word */
+		memcpy(&y, b + n - 8, 8);
+		if (x == y)
+			return n;
+	}
+	while (k < n && a[k] == b[k])
+		k++;
+	return k;
+}
+
+/*
  * Whether a cell at path, of length n, may follow the last cell read:
  * in preorder it is a descendant of it or on a later branch.
  */
 static int
 follows(const struct qtreader *r, const char *path, int n)
 {
-	int k = 0;
+	int k = pathprefix(path, n, r->path, r->pathlen);
 
 	if (!r->havecells)
 		return 1;
-	while (k < r->pathlen && k < n && path[k] == r->path[k])
-		k++;
 	return k < r->pathlen ? k < n && path[k] > r->path[k] : n > k;
 }
 
@@ -345,8 +372,7 @@ skippath(struct qtreader *r, char **pp, const char *end, uint64_t *ix,
     uint64_t *iy, int *common)
 {
 	char *p = *pp;
-	int j, k = 0, n = r->pathlen;
-	uint64_t a, b;
+	int j, k, n = r->pathlen;
 	unsigned d;
 
 	if (p[0] == '.') {
@@ -358,20 +384,7 @@ skippath(struct qtreader *r, char **pp, const char *end, uint64_t *ix,
 		*common = 0;
 		return 0;
 	}
-	/* mostly a sibling or a child of the last cell */
-	if (n > 0 && p + n <= end && sametext(p, r->path, n - 1))
-		k = n - 1 + (p[n - 1] == r->path[n - 1]);
-	else {
-		while (k + 8 <= n && p + k + 8 <= end) {
-			memcpy(&a, p + k, 8);
-			memcpy(&b, r->path + k, 8);
-			if (a != b)
-				break;
-			k += 8;
-		}
-		while (k < n && p[k] == r->path[k])
-			k++;
-	}
+	k = pathprefix(p, (int)(end - p), r->path, n);
 	/* the prefixes past k are the new path's from here on */
 	for (j = k; (d = (unsigned char)p[j] - '0') <= 3 && j < QT_MAXLEVEL;
 	    j++) {
@@ -400,7 +413,7 @@ static int
 fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 {
 	struct cell *c = &rec->c;
-	char *p = line + 5, *end = line + len, *f[10];
+	char *p = line + 5, *end = line + len, **f = rec->field;
 	const struct qtcoord *kx, *ky, *ks;
 	uint64_t ix, iy;
 	double size;
@@ -448,8 +461,6 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 		if (p != end)
 			goto fail;
 	}
-	for (i = 0; i < n; i++)
-		rec->field[i] = f[i];
 	rec->nfield = n;
 	rec->canon = 1;
 	for (i = common; i < level; i++)	/* a digit or two, mostly */

@@ -266,20 +266,9 @@ static void
 jumpleaf(const char *path, int level)
 {
 	int d, k = 0;
-	uint64_t a, b;
 
-	if (path != NULL) {
-		/* eight digits at a time, then one */
-		while (k + 8 <= lastlen && k + 8 <= level) {
-			memcpy(&a, path + k, 8);
-			memcpy(&b, lastpath + k, 8);
-			if (a != b)
-				break;
-			k += 8;
-		}
-		while (k < lastlen && k < level && path[k] == lastpath[k])
-			k++;
-	}
+	if (path != NULL)
+		k = pathprefix(path, level, lastpath, lastlen);
 	/* the reader saw to it that path follows lastpath in preorder */
 	for (d = lastlen - 1; d >= k && d >= 0; d--)
 		if (d > k || path == NULL)
