@@ -99,17 +99,6 @@ usage(void)
 	exit(2);
 }
 
-static void
-put(struct buf *b, const char *s, size_t n)
-{
-	if (b->len + n > b->cap) {
-		b->cap = b->cap + n > 2 * b->cap ? b->cap + n : 2 * b->cap;
-		b->p = xreallocarray(b->p, b->cap, 1);
-	}
-	memcpy(b->p + b->len, s, n);
-	b->len += n;
-}
-
 /* Room for n more bytes at the end of b, for formatting in place. */
 static char *
 room(struct buf *b, size_t n)
@@ -119,6 +108,13 @@ room(struct buf *b, size_t n)
 		b->p = xreallocarray(b->p, b->cap, 1);
 	}
 	return b->p + b->len;
+}
+
+static void
+put(struct buf *b, const char *s, size_t n)
+{
+	memcpy(room(b, n), s, n);
+	b->len += n;
 }
 
 static void
