@@ -1,6 +1,8 @@
 #!/bin/sh
-# bench.sh: time polyread and qtsplit on generated polygons, print a table
-# and the targets of issue 3 with their figures, and draw samples/bench.svg.
+# bench.sh: time polyread and qtsplit on generated polygons, and qtleaves,
+# qtstats and qt2svg on the largest level-16 stream (with their instructions
+# a record by callgrind when valgrind is installed), print a table and the
+# targets of issue 3 with their figures, and draw samples/bench.svg.
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
