@@ -72,6 +72,10 @@ sanitize:
 	    LDFLAGS="$(SANFLAGS)" test
 	$(MAKE) clean
 
+# The outputs of every program on every sample against the saved ones.
+regress: all
+	sh tests/regress.sh
+
 # Times polyread and qtsplit on generated polygons and draws samples/bench.svg.
 bench: all
 	sh tools/bench.sh
@@ -96,4 +100,4 @@ clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
 	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats
 
-.PHONY: all test demo bench sanitize fuzz install uninstall clean
+.PHONY: all test demo regress bench sanitize fuzz install uninstall clean

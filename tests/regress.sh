@@ -1,0 +1,116 @@
+#!/bin/sh
+# regress.sh: the outputs of every program, with every option that changes
+# output, on every sample and fixture, and the messages of every tests/bad
+# case, compared byte for byte (cmp) with the saved ones in tests/regress/.
+# A refactor must leave them all alone; a change meant to alter output
+# saves them again (-s) in the same commit and says why.
+#
+#   sh tests/regress.sh	    compare; prints each case that differs, exits 1
+#   sh tests/regress.sh -s  save the outputs of the programs built now
+#
+# Each case is one shell command run from the project root with the built
+# programs first on PATH; its standard output, standard error and exit
+# status go to one file.  Large streams (level 16) are saved as cksum(1)
+# lines, not whole.  Seconds in -v lines are dropped: the clock is not
+# output.
+set -u
+cd "$(dirname "$0")/.." || exit 2
+top=$(pwd)
+PATH="$top:$PATH"
+LC_ALL=C
+export PATH LC_ALL
+saved=tests/regress
+save=0
+[ "${1:-}" = -s ] && save=1
+
+for p in polyread qtsplit qtleaves qtstats qt2svg; do
+	[ -x "./$p" ] || { echo "regress: build first (make)" >&2; exit 2; }
+done
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/regress.XXXXXX") || exit 2
+trap 'rm -rf "$tmp"' 0
+trap 'exit 2' HUP INT TERM
+
+# Every case: NAME COMMAND...; the command sees $T (a level-6 tree of the
+# input), $I (the input) and $W (a scratch directory).
+cases() {
+	for f in samples/*.brep samples/*.xy samples/*.wkt samples/*.poly \
+	    tests/fixtures/*; do
+		b=${f##*/}
+		echo "$b.polyread|polyread $f"
+		echo "$b.polyread-l3|polyread -l 3 $f"
+		echo "$b.polyread-u|polyread -u -100,-100,400 $f"
+		echo "$b.polyread-v|polyread -v $f 2>&1 >/dev/null"
+		echo "$b.qtsplit|polyread $f | qtsplit -l 6"
+		echo "$b.qtsplit-m|polyread $f | qtsplit -l 5 -m 3"
+		echo "$b.qtsplit-r|polyread $f | qtsplit -l 8 -r 30"
+		echo "$b.qtsplit-r0|polyread $f | qtsplit -l 7 -r 0123"
+		echo "$b.qtsplit-v|polyread $f | qtsplit -v -l 6 2>&1 >/dev/null"
+		echo "$b.qtleaves|polyread $f | qtsplit -l 6 | qtleaves"
+		echo "$b.qtleaves-cE|polyread $f | qtsplit -l 6 | qtleaves -c E"
+		echo "$b.qtleaves-n|polyread $f | qtsplit -l 5 | qtleaves -n -c FEP"
+		echo "$b.qtleaves-v|polyread $f | qtsplit -l 6 | qtleaves -v 2>&1 >/dev/null"
+		echo "$b.qtstats|polyread $f | qtsplit -l 6 | qtstats -l"
+		echo "$b.qtstats-mesh|polyread $f | qtsplit -l 5 | qtleaves -n | qtstats"
+		echo "$b.qtstats-v|polyread $f | qtsplit -l 6 | qtstats -v 2>&1 >/dev/null"
+		echo "$b.qt2svg|polyread $f | qtsplit -l 6 | qt2svg"
+		echo "$b.qt2svg-c|polyread $f | qtsplit -l 7 | qt2svg -c P -w 300 -m 4"
+		echo "$b.qt2svg-nN|polyread $f | qtsplit -l 3 | qtleaves -n | qt2svg -n -N"
+		echo "$b.qt2svg-n|polyread $f | qtsplit -l 3 | qtleaves | qt2svg -n"
+		echo "$b.qt2svg-v|polyread $f | qtsplit -l 6 | qt2svg -v 2>&1 >/dev/null"
+	done
+	# The readers' long way: numbers spelled otherwise than the writers do.
+	echo "odd.qtleaves|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtleaves -n -c FEP"
+	echo "odd.qtstats|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtstats -l"
+	echo "odd.qt2svg|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qt2svg"
+	echo "odd.qtsplit|polyread samples/amoeba.brep | sed -f tests/regress/odd.sed | qtsplit -l 4"
+	# Deep streams, by checksum.
+	echo "star16.qtsplit|awk -v shape=star -v n=1000 -f tools/genpoly.awk | polyread | qtsplit -l 16 | cksum"
+	echo "amoeba16.qtsplit|polyread samples/amoeba.brep | qtsplit -l 16 | cksum"
+	echo "amoeba16.qtleaves|polyread samples/amoeba.brep | qtsplit -l 16 | qtleaves | cksum"
+	echo "amoeba13.qtleaves-n|polyread samples/amoeba.brep | qtsplit -l 13 | qtleaves -n | cksum"
+	echo "amoeba16.qtstats|polyread samples/amoeba.brep | qtsplit -l 16 | qtstats -l"
+	echo "amoeba13.qtstats-mesh|polyread samples/amoeba.brep | qtsplit -l 13 | qtleaves -n | qtstats"
+	echo "amoeba13.qt2svg|polyread samples/amoeba.brep | qtsplit -l 13 | qt2svg | cksum"
+	echo "amoeba30.qtsplit-r|polyread samples/amoeba.brep | qtsplit -l 30 -r 1203012 | cksum"
+	# Every bad input through every program that reads its kind.
+	for f in tests/bad/*; do
+		b=${f##*/}
+		case $b in
+		EXPECT) ;;
+		*.qt)
+			for p in qtsplit qtleaves qtstats qt2svg; do
+				echo "bad-$b.$p|$p $f"
+			done ;;
+		*)	echo "bad-$b.polyread|polyread $f" ;;
+		esac
+	done
+}
+
+# Runs one case into $2: output, messages, then the exit status.
+runcase() {
+	sh -c "$1" > "$2" 2>&1
+	echo "exit $?" >> "$2"
+	sed 's/, [0-9][0-9]* s$/, N s/' "$2" > "$2.t" && mv "$2.t" "$2"
+}
+
+[ $save = 1 ] && mkdir -p "$saved/out"
+n=0
+bad=0
+cases > "$tmp/cases"
+while IFS='|' read -r name cmd; do
+	n=$((n + 1))
+	runcase "$cmd" "$tmp/out"
+	if [ $save = 1 ]; then
+		mv "$tmp/out" "$saved/out/$name"
+	elif ! cmp -s "$tmp/out" "$saved/out/$name"; then
+		echo "regress: $name differs: $cmd"
+		diff -u "$saved/out/$name" "$tmp/out" 2>&1 | head -n 12
+		bad=$((bad + 1))
+	fi
+done < "$tmp/cases"
+if [ $save = 1 ]; then
+	echo "regress: saved $n outputs in $saved/out"
+	exit 0
+fi
+echo "regress: $n cases, $bad differ"
+[ $bad -eq 0 ]
