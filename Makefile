@@ -13,7 +13,8 @@ BIN = polyread qtsplit qtleaves qtstats qt2svg
 MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
 	man/qt2svg.1
 MAN5 = man/qtree.5
-LIBOBJ = lib/util.o lib/geom.o lib/stream.o lib/fmtreal.o lib/area.o
+LIBOBJ = lib/msg.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
+	lib/write.o lib/area.o
 
 all: $(BIN)
 

@@ -20,8 +20,9 @@
 #define QT_MAXLEVEL	50
 #define QT_COORD_MAX	1e100
 #define QT_COORD_MIN	1e-100
+#define QT_GRID		QT_MAXLEVEL	/* the finest grid: exact corners */
 
-/* util.c: messages, memory, numbers */
+/* msg.c: messages, memory, files; every message is "prog: file:line: text" */
 extern const char *progname;
 void	 setprogname_(const char *);
 void	 die(int, const char *, ...);
@@ -30,16 +31,21 @@ void	 warnat(const char *, long, const char *, ...);
 void	*xmalloc(size_t);
 void	*xreallocarray(void *, size_t, size_t);
 char	*xstrdup(const char *);
-int	 parsereal(const char *, const char **, double *);
-int	 parselong(const char *, const char **, long long *);
-int	 coordok(double);
-char	*fmtint(char *, long long);
 FILE	*openin(const char *, const char **);
 void	 progress(int, const char *, ...);
 void	 closeout(void);
 
-/* fmtreal.c: the shortest decimal that reads back; buf holds 32 bytes */
-char	*fmtreal(char *, double);
+/*
+ * parse.c: numbers read, in the C locale whatever LANG says; 0 on success
+ * with *end after the number, -1 malformed, -2 out of range.
+ */
+int	 parsereal(const char *, const char **, double *);
+int	 parselong(const char *, const char **, long long *);
+int	 coordok(double);
+
+/* fmt.c: numbers written; each returns the terminating NUL */
+char	*fmtreal(char *, double);	/* shortest that reads back; 32 bytes */
+char	*fmtint(char *, long long);	/* 24 bytes */
 
 /* geom.c: exact predicates */
 struct point {
@@ -52,69 +58,39 @@ int	 ray_crosses(struct point, struct point, struct point, struct point);
 int	 ring_contains(const struct point *, size_t, struct point,
 	    struct point);
 
-/* stream.c: the qtree(5) format */
-enum qtkind {
-	QT_EOF, QT_UNIVERSE, QT_LEVEL, QT_RING, QT_VERTEX, QT_NODE, QT_LEAF,
-	QT_OTHER
-};
-
+/*
+ * cell.c: cell arithmetic.  A cell's corner is X0 + IX * h in doubles,
+ * h = SIZE / 2^LEVEL; a path has one digit per level, "." at the root.
+ */
 struct universe {
 	double	x0, y0, size;
 };
 
 struct cell {
-	const char	*path;	/* "." for the root */
+	const char	*path;	/* NUL-terminated; "." for the root */
 	int		 level;
 	uint64_t	 ix, iy;
 	double		 x, y, size;
 	char		 class;	/* 'F', 'E', 'P'; 0 for a node */
+	unsigned long long id;	/* a leaf's element number; 0 for none */
+	const char	*text;	/* as read, when spelled as written: */
+	size_t		 textlen;	/* the bytes through the class */
 };
 
-struct qtrec {
-	enum qtkind	 kind;
-	char		*line;	/* the record as read, without newline */
-	size_t		 len;
-	char		*field[16];
-	int		 nfield;
-	struct universe	 u;	/* QT_UNIVERSE */
-	int		 level;	/* QT_LEVEL */
-	long		 ringid;	/* QT_RING */
-	int		 hole;		/* QT_RING */
-	size_t		 nvert;		/* QT_RING */
-	struct point	 v;	/* QT_VERTEX */
-	struct cell	 c;	/* QT_NODE, QT_LEAF */
-	int		 canon;	/* spelled as the toolkit's writers spell it */
-};
+double	 cellcoord(double, double, int, uint64_t);
+int	 pathcell(const char *, int, uint64_t *, uint64_t *);
+int	 pathprefix(const char *, int, const char *, int);
+int	 cellcmp(const struct cell *, const struct cell *);
 
-struct qtcoord {
-	uint64_t	 i;
-	double		 v;
-	size_t		 len, ilen;
-	char		 text[32];	/* of v */
-	char		 itext[24];	/* of i */
-};
-
-struct qtreader {
-	FILE		*fp;
-	const char	*name;
-	long		 lineno;
-	char		*buf;
-	size_t		 cap, pos, end;	/* unread input: buf[pos..end-1] */
-	int		 eof;
-	int		 state;
-	unsigned long long count;
-	size_t		 vleft;
-	long		 nrings;
-	int		 haveuniverse, havelevel, havecells;
-	int		 verbose;	/* report progress, as -v asks */
-	int		 deepest;	/* the deepest cell's level, -1 before one */
-	struct universe	 u;
-	double		 cellsize[QT_MAXLEVEL + 1];
-	struct qtcoord	 coord[QT_MAXLEVEL + 1][3][8];	/* stream.c */
-	char		 path[QT_MAXLEVEL];	/* the last cell's */
-	int		 pathlen;
-	int		 lastleaf;	/* whether the last cell is a leaf */
-	uint64_t	 pathix[QT_MAXLEVEL + 1], pathiy[QT_MAXLEVEL + 1];
+/*
+ * read.c: the qtree(5) reader.  It checks every record against qtree(5)
+ * and reports any defect itself, as "prog: file:line: message", exit 1:
+ * what qt_read returns is valid.  A ring comes whole, its vertices with
+ * it; a record's text is kept as read, for qt_echo.
+ */
+enum qtkind {
+	QT_EOF, QT_UNIVERSE, QT_LEVEL, QT_RING, QT_NODE, QT_LEAF,
+	QT_VERTEX, QT_ELEM, QT_OTHER
 };
 
 struct ring {
@@ -124,34 +100,59 @@ struct ring {
 	struct point	*v;
 };
 
-struct polygon {
-	struct universe	 u;
-	int		 haveuniverse;
-	int		 level;		/* -1 when the stream has none */
-	size_t		 nrings;
-	struct ring	*rings;
+struct meshvertex {		/* vertex ID X Y */
+	unsigned long long id;
+	struct point	 p;
 };
 
-void	 qt_open(struct qtreader *, FILE *, const char *);
-enum qtkind qt_read(struct qtreader *, struct qtrec *);
-void	 qt_close(struct qtreader *);
-void	 qt_fail(struct qtreader *, const char *, ...);
-int	 qt_split(struct qtreader *, char *, char **, int);
-int	 pathprefix(const char *, int, const char *, int);
-double	 qt_real(struct qtreader *, const char *, const char *);
+struct meshelem {		/* elem ID TYPE V1 V2 ... */
+	unsigned long long id;
+	const char	*type;
+	size_t		 n;
+	const unsigned long long *v;	/* vertex ids, each defined before */
+};
 
+struct qtrec {
+	enum qtkind	 kind;
+	const char	*line;	/* as read; a ring's v records follow it */
+	size_t		 len;
+	long		 lineno;	/* of its first line */
+	unsigned long long nrec;	/* records in line: 1, or 1 + a ring's n */
+	struct universe	 u;	/* QT_UNIVERSE */
+	int		 level;	/* QT_LEVEL */
+	struct ring	 ring;	/* QT_RING */
+	struct cell	 c;	/* QT_NODE, QT_LEAF */
+	struct meshvertex vertex;	/* QT_VERTEX */
+	struct meshelem	 elem;	/* QT_ELEM */
+};
+
+enum {
+	QT_NEEDUNIVERSE = 1,	/* a stream without a universe is an error */
+	QT_VERBOSE = 2		/* progress on stderr, as -v asks */
+};
+
+struct qtreader *qt_open(FILE *, const char *, int);
+enum qtkind qt_read(struct qtreader *, struct qtrec *);
+long	 qt_lineno(const struct qtreader *);
+void	 qt_fail(const struct qtreader *, const char *, ...);
+void	 qt_close(struct qtreader *);
+
+/*
+ * write.c: the qtree(5) writer, buffered on stdout; qt_end writes the end
+ * record, which counts every record written, and flushes.
+ */
 void	 qt_header(void);
-void	 qt_raw(const char *, size_t);
 void	 qt_universe(const struct universe *);
 void	 qt_level(int);
 void	 qt_ring(const struct ring *);
-char	*qt_record(size_t);
-void	 qt_recorded(const char *);
+void	 qt_cell(const struct cell *, unsigned long long);
+void	 qt_gridvertex(unsigned long long, int, uint64_t, uint64_t);
+void	 qt_elem(unsigned long long, const char *, size_t,
+	    const unsigned long long *);
+void	 qt_echo(const struct qtrec *);
+struct qtrec *qt_keep(const struct qtrec *);
+void	 qt_free(struct qtrec *);
 void	 qt_end(void);
-void	 qt_put(const char *, size_t);
-
-double	 cellcoord(double, double, int, uint64_t);
-int	 pathcell(const char *, int, uint64_t *, uint64_t *);
 
 /*
  * area.c (qtstats): exact sums of products.  An xsum is a floating-point

@@ -230,16 +230,6 @@ mesh() {
 	run -0 grep -c 'M100 100h0' mesh.svg
 }
 
-@test "vertices may come after the elements that name them" {
-	mesh
-	qt2svg -w 200 mesh.qt > before.svg
-	awk '$1 != "vertex" && $1 != "end" { print }
-	    END { for (i = 1; i <= 9; i++) print v[i]; print "end 19" }
-	    $1 == "vertex" { v[$2] = $0 }' mesh.qt > after.qt
-	qt2svg -w 200 after.qt > after.svg
-	run -0 diff -u <(group elements before.svg) <(group elements after.svg)
-}
-
 @test "-n numbers elements at their centres, -N vertices beside them" {
 	mesh
 	qt2svg -w 200 -nN mesh.qt > mesh.svg
@@ -297,16 +287,16 @@ mesh() {
 		[[ "$stderr" == "qt2svg: bad.qt:$1: "*"$3"* ]]
 	}
 	check 8 'vertex 1 x 0' 'not a number'
-	check 8 'vertex 0 0 0' 'not a positive integer'
+	check 8 'vertex 0 0 0' 'vertex id out of range 1 to'
 	check 8 'vertex 1 0' 'fields'
 	check 8 'vertex 1 0 3' 'outside the universe'
 	check 8 'vertex 1  0 0' 'empty field'
 	check 17 'elem 1 quad 1 2 5' 'expected 4'
-	check 17 'elem 1 Quad 1 2 5 4' 'not a word'
-	check 4 'leaf 0 1 0 0 0 0 1 F one' 'element id'
-	# an element naming a vertex nobody defines, and a vertex defined twice
-	check 17 'elem 1 quad 1 2 5 10' 'vertex 10'
-	check 9 'vertex 1 1 0' 'again'
+	check 17 'elem 1 Quad 1 2 5 4' 'not a lowercase word'
+	check 4 'leaf 0 1 0 0 0 0 1 F one' 'element id is not an integer'
+	# an element naming a vertex nobody defined before it, a vertex twice
+	check 17 'elem 1 quad 1 2 5 10' 'refers to vertex 10'
+	check 9 'vertex 1 1 0' 'vertex 1 follows vertex 1'
 }
 
 @test "a defective or truncated stream writes nothing and exits 1" {

@@ -393,19 +393,38 @@ hanging_vertices 1" ]
 	    END { exit !ok }' s
 }
 
-@test "mesh records are checked: numbering and references" {
-	printf 'qtree 1\nvertex 1 0 0\nvertex 3 1 0\nend 2\n' > a.qt
-	run -1 --separate-stderr qtstats a.qt
-	[ "$stderr" = "qtstats: a.qt:3: vertex 3 follows vertex 1" ]
-	printf 'qtree 1\nvertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 quad 1 2 3 4\nend 4\n' > b.qt
-	run -1 --separate-stderr qtstats b.qt
-	[ "$stderr" = "qtstats: b.qt:5: elem 1 refers to vertex 4, which no vertex record before it defines" ]
-	printf 'qtree 1\nvertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 quad 1 2 3\nend 4\n' > c.qt
-	run -1 --separate-stderr qtstats c.qt
-	[ "$stderr" = "qtstats: c.qt:5: a quad element has 4 vertices, not 3" ]
-	printf 'qtree 1\nvertex 1 0 x\nend 1\n' > d.qt
-	run -1 --separate-stderr qtstats d.qt
-	[ "$stderr" = "qtstats: d.qt:2: vertex coordinate is not a number: x" ]
+@test "mesh records are read by one rule in every reader" {
+	# qtree(5): ids run 1, 2, ... in record order; an element names
+	# vertices defined before it; a quad has 4 vertices
+	check() {	# records after the universe, the line and message
+		printf 'qtree 1\nuniverse 0 0 2\n%s\nend %s\n' "$1" \
+		    "$(($(printf '%s\n' "$1" | wc -l) + 1))" > m.qt
+		for p in qtstats qt2svg; do
+			run -1 --separate-stderr $p m.qt
+			[ "$stderr" = "$p: m.qt:$2: $3" ]
+			[ -z "$output" ]
+		done
+	}
+	check $'vertex 1 0 0\nvertex 3 1 0' 4 "vertex 3 follows vertex 1"
+	check $'vertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 quad 1 2 3 4' \
+	    6 "elem 1 refers to vertex 4, which no vertex record before it defines"
+	check $'vertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 quad 1 2 3' \
+	    6 "quad element has 3 vertices, expected 4"
+	check $'vertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 2 tri 1 2 3' \
+	    6 "elem 2 follows elem 0"
+	check $'vertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 Tri 1 2 3' \
+	    6 "element type is not a lowercase word: Tri"
+	check 'vertex 1 0 x' 3 "y is not a number: x"
+	check 'vertex 1 0 3' 3 "vertex 1 lies outside the universe"
+	check 'vertex 1 0' 3 "vertex record has 3 fields, expected 4"
+	# and a valid mesh reads alike: 1 tri with its 3 vertices
+	printf 'qtree 1\nuniverse 0 0 2\nvertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 tri 1 2 3\nend 5\n' > ok.qt
+	run -0 qtstats ok.qt
+	[[ "$output" == *$'vertices 3\nelements 1\nelements_quad 0\nelements_tri 1\n'* ]]
+	run -0 qt2svg ok.qt
+	# qtleaves reads a tree, so it refuses a mesh at its first record
+	run -1 --separate-stderr qtleaves ok.qt
+	[ "$stderr" = "qtleaves: ok.qt:3: the input already holds a mesh (vertex record): qtleaves reads a tree" ]
 }
 
 @test "a truncated stream is an error; a bad option is a usage error" {

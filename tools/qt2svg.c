@@ -44,14 +44,10 @@ struct buf {
 };
 
 struct vertex {
-	long long	 id;
-	long		 line;
 	long long	 x, y;		/* hundredths of a pixel */
 };
 
 struct elem {
-	long long	 id;
-	long		 line;
 	size_t		 first, nv;	/* into elemverts */
 };
 
@@ -74,17 +70,13 @@ static struct buf ringpath[2];	/* outer rings, holes */
 static long nrings[2];
 static size_t ringpathverts[2];
 static int ringkind;
-static size_t ringleft, ringsize;
-static long long ringfirstx, ringfirsty, ringlastx, ringlasty;
+static long long ringlastx, ringlasty;
 
 static struct vertex *verts;
 static size_t nverts, vertcap;
 static struct buf dots, vertlabels;
 
-static struct elem *elems;
-static size_t nelems, elemcap;
-static long long *elemverts;
-static size_t nelemverts, elemvertcap;
+static size_t nelems;
 
 static struct buf meshpath, elemlabels;
 
@@ -273,28 +265,14 @@ label(struct buf *b, long long x, long long y, double size, long long id)
 	putstr(b, "</text>\n");
 }
 
-static long long
-positiveid(struct qtreader *r, const char *s, const char *what)
-{
-	const char *end;
-	long long v;
-
-	if (parselong(s, &end, &v) < 0 || *end != '\0' || v < 1)
-		qt_fail(r, "%s is not a positive integer: %s", what, s);
-	return v;
-}
-
 static void
-leaf(struct qtreader *r, const struct qtrec *rec)
+leaf(const struct cell *c)
 {
-	const struct cell *c = &rec->c;
 	int k = classindex(c->class);
-	long long x0, x1, y0, y1, id = 0;
+	long long x0, x1, y0, y1;
 	struct buf *b = &leaves[k];
 	char *p;
 
-	if (rec->nfield == 10)
-		id = positiveid(r, rec->field[9], "element id");
 	if (!drawn[k])
 		return;
 	x0 = pixelx(c->x);
@@ -320,19 +298,11 @@ leaf(struct qtreader *r, const struct qtrec *rec)
 	nleaves[k]++;
 	if (c->level > deepestleaf)
 		deepestleaf = c->level;
-	if (nflag && id > 0) {
+	if (nflag && c->id > 0) {
 		label(&leaflabels, (x0 + x1) / 2, (y0 + y1) / 2,
-		    (x1 - x0) / 100.0, id);
+		    (x1 - x0) / 100.0, c->id);
 		nleaflabels++;
 	}
-}
-
-static void
-ringstart(const struct qtrec *rec)
-{
-	ringkind = rec->hole;
-	ringleft = ringsize = rec->nvert;
-	nrings[ringkind]++;
 }
 
 /*
@@ -358,52 +328,41 @@ ringto(long long x, long long y)
 }
 
 static void
-ringvertex(struct point v)
+ring(const struct ring *g)
 {
-	struct buf *b = &ringpath[ringkind];
-	size_t *n = &ringpathverts[ringkind];
-	long long x = pixelx(v.x), y = pixely(v.y);
+	struct buf *b = &ringpath[g->hole];
+	size_t *n = &ringpathverts[g->hole], i;
+	long long x = pixelx(g->v[0].x), y = pixely(g->v[0].y);
 
-	if (ringleft == ringsize) {
-		if (*n >= RINGCHUNK) {
-			putstr(b, "\"/>\n<path d=\"");
-			*n = 0;
-		}
-		put(b, "M", 1);
-		putxy(b, x, y);
-		(*n)++;
-		ringfirstx = ringlastx = x;
-		ringfirsty = ringlasty = y;
-	} else
-		ringto(x, y);
-	if (--ringleft == 0)
-		ringto(ringfirstx, ringfirsty);
+	ringkind = g->hole;
+	nrings[ringkind]++;
+	if (*n >= RINGCHUNK) {
+		putstr(b, "\"/>\n<path d=\"");
+		*n = 0;
+	}
+	put(b, "M", 1);
+	putxy(b, x, y);
+	(*n)++;
+	ringlastx = x;
+	ringlasty = y;
+	for (i = 1; i < g->n; i++)
+		ringto(pixelx(g->v[i].x), pixely(g->v[i].y));
+	ringto(x, y);
 }
 
 static void
-meshvertex(struct qtreader *r, char **field, int n)
+meshvertex(const struct meshvertex *mv)
 {
 	struct vertex *v;
 	char num[24];
-	double x, y;
 
-	if (n != 4)
-		qt_fail(r, "vertex record has %d fields, expected 4", n);
-	if (!r->haveuniverse)
-		qt_fail(r, "vertex record before the universe record");
 	if (nverts == vertcap) {
 		vertcap = vertcap ? 2 * vertcap : 256;
 		verts = xreallocarray(verts, vertcap, sizeof(*verts));
 	}
 	v = &verts[nverts++];
-	v->id = positiveid(r, field[1], "vertex id");
-	v->line = r->lineno;
-	x = qt_real(r, field[2], "x");
-	y = qt_real(r, field[3], "y");
-	if (x < u.x0 || x - u.x0 > u.size || y < u.y0 || y - u.y0 > u.size)
-		qt_fail(r, "vertex %s lies outside the universe", field[1]);
-	v->x = pixelx(x);
-	v->y = pixely(y);
+	v->x = pixelx(mv->p.x);
+	v->y = pixely(mv->p.y);
 	if (nverts > 1 && (nverts - 1) % CHUNK == 0)
 		putstr(&dots, "\"/>\n<path d=\"");
 	put(&dots, "M", 1);
@@ -416,148 +375,45 @@ meshvertex(struct qtreader *r, char **field, int n)
 		putstr(&vertlabels, "\" y=\"");
 		puthund(&vertlabels, v->y - 150);
 		putstr(&vertlabels, "\">");
-		putstr(&vertlabels, (fmtint(num, v->id), num));
+		putstr(&vertlabels, (fmtint(num, mv->id), num));
 		putstr(&vertlabels, "</text>\n");
 	}
 }
 
+/* Elements use only vertices defined before them: drawn as they come. */
 static void
-meshelem(struct qtreader *r, char **field, int n)
-{
-	struct elem *e;
-	const char *p;
-	int i, want = 0;
-
-	if (n < 6)
-		qt_fail(r, "elem record has %d fields, expected at least 6", n);
-	for (p = field[2]; *p != '\0'; p++)
-		if ((*p < 'a' || *p > 'z') && (*p < '0' || *p > '9'))
-			qt_fail(r, "element type is not a word: %s", field[2]);
-	if (strcmp(field[2], "quad") == 0)
-		want = 4;
-	else if (strcmp(field[2], "tri") == 0)
-		want = 3;
-	if (want > 0 && n != 3 + want)
-		qt_fail(r, "%s element has %d vertices, expected %d", field[2],
-		    n - 3, want);
-	if (nelems == elemcap) {
-		elemcap = elemcap ? 2 * elemcap : 256;
-		elems = xreallocarray(elems, elemcap, sizeof(*elems));
-	}
-	e = &elems[nelems++];
-	e->id = positiveid(r, field[1], "element id");
-	e->line = r->lineno;
-	e->first = nelemverts;
-	e->nv = n - 3;
-	for (i = 3; i < n; i++) {
-		if (nelemverts == elemvertcap) {
-			elemvertcap = elemvertcap ? 2 * elemvertcap : 1024;
-			elemverts = xreallocarray(elemverts, elemvertcap,
-			    sizeof(*elemverts));
-		}
-		elemverts[nelemverts++] = positiveid(r, field[i], "vertex id");
-	}
-}
-
-static void
-other(struct qtreader *r, struct qtrec *rec)
-{
-	char *field[64];
-	int n;
-
-	if (strncmp(rec->line, "vertex ", 7) == 0) {
-		n = qt_split(r, rec->line, field, 64);
-		meshvertex(r, field, n);
-	} else if (strncmp(rec->line, "elem ", 5) == 0) {
-		n = qt_split(r, rec->line, field, 64);
-		meshelem(r, field, n);
-	}
-	/* Other records are for other programs. */
-}
-
-static int
-byid(const void *a, const void *b)
-{
-	const struct vertex *va = a, *vb = b;
-
-	if (va->id != vb->id)
-		return va->id < vb->id ? -1 : 1;
-	return va->line < vb->line ? -1 : va->line > vb->line;
-}
-
-static const struct vertex *
-findvertex(const struct vertex *sorted, long long id)
-{
-	size_t lo = 0, hi = nverts;
-
-	while (lo < hi) {
-		size_t mid = lo + (hi - lo) / 2;
-
-		if (sorted[mid].id < id)
-			lo = mid + 1;
-		else
-			hi = mid;
-	}
-	return lo < nverts && sorted[lo].id == id ? &sorted[lo] : NULL;
-}
-
-/*
- * Turns the elements into path text now that every vertex is known, so
- * that vertices may come in any order.
- */
-static void
-meshpaths(const char *name)
+meshelem(const struct meshelem *e)
 {
 	struct buf *path = &meshpath;
-	struct vertex *sorted;
-	size_t i, k;
+	long long xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+	long long sx = 0, sy = 0;
+	size_t k;
 
-	sorted = xreallocarray(NULL, nverts, sizeof(*sorted));
-	if (nverts > 0)
-		memcpy(sorted, verts, nverts * sizeof(*sorted));
-	qsort(sorted, nverts, sizeof(*sorted), byid);
-	for (i = 1; i < nverts; i++)
-		if (sorted[i].id == sorted[i - 1].id)
-			errat(name, sorted[i].line, "vertex %lld is defined "
-			    "again (first at line %ld)", sorted[i].id,
-			    sorted[i - 1].line);
-	for (i = 0; i < nelems; i++) {
-		const struct elem *e = &elems[i];
-		long long xmin = 0, xmax = 0, ymin = 0, ymax = 0;
-		long long sx = 0, sy = 0;
+	if (nelems > 0 && nelems % CHUNK == 0)
+		putstr(path, "\"/>\n<path d=\"");
+	nelems++;
+	for (k = 0; k < e->n; k++) {
+		const struct vertex *v = &verts[e->v[k] - 1];
 
-		if (i > 0 && i % CHUNK == 0)
-			putstr(path, "\"/>\n<path d=\"");
-		for (k = 0; k < e->nv; k++) {
-			const struct vertex *v;
-
-			v = findvertex(sorted, elemverts[e->first + k]);
-			if (v == NULL)
-				errat(name, e->line, "element %lld uses vertex "
-				    "%lld, which the stream does not define",
-				    e->id, elemverts[e->first + k]);
-			put(path, k == 0 ? "M" : " ", 1);
-			putxy(path, v->x, v->y);
-			if (k == 0 || v->x < xmin)
-				xmin = v->x;
-			if (k == 0 || v->x > xmax)
-				xmax = v->x;
-			if (k == 0 || v->y < ymin)
-				ymin = v->y;
-			if (k == 0 || v->y > ymax)
-				ymax = v->y;
-			sx += v->x;
-			sy += v->y;
-		}
-		put(path, "z", 1);
-		seefeature((xmax - xmin < ymax - ymin ? xmax - xmin :
-		    ymax - ymin) / 100.0);
-		if (nflag)
-			label(&elemlabels, sx / (long long)e->nv,
-			    sy / (long long)e->nv,
-			    (xmax - xmin) / 100.0, e->id);
+		put(path, k == 0 ? "M" : " ", 1);
+		putxy(path, v->x, v->y);
+		if (k == 0 || v->x < xmin)
+			xmin = v->x;
+		if (k == 0 || v->x > xmax)
+			xmax = v->x;
+		if (k == 0 || v->y < ymin)
+			ymin = v->y;
+		if (k == 0 || v->y > ymax)
+			ymax = v->y;
+		sx += v->x;
+		sy += v->y;
 	}
-	free(sorted);
+	put(path, "z", 1);
+	seefeature((xmax - xmin < ymax - ymin ? xmax - xmin : ymax - ymin) /
+	    100.0);
+	if (nflag)
+		label(&elemlabels, sx / (long long)e->n, sy / (long long)e->n,
+		    (xmax - xmin) / 100.0, e->id);
 }
 
 static void
@@ -810,11 +666,11 @@ pixels(int ch, const char *arg, long long lo)
 int
 main(int argc, char *argv[])
 {
-	struct qtreader r;
+	struct qtreader *r;
+	FILE *fp;
 	struct qtrec rec;
 	enum qtkind kind;
 	const char *name;
-	FILE *fp;
 	int ch, i, verbose = 0;
 
 	setprogname_(argv[0]);
@@ -851,9 +707,9 @@ main(int argc, char *argv[])
 		die(2, "-m %d leaves no room in -w %d", margin, width);
 
 	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	qt_open(&r, fp, name);
-	r.verbose = verbose;
-	while ((kind = qt_read(&r, &rec)) != QT_EOF) {
+	r = qt_open(fp, name,
+	    QT_NEEDUNIVERSE | (verbose ? QT_VERBOSE : 0));
+	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
 		case QT_UNIVERSE:
 			u = rec.u;
@@ -862,25 +718,22 @@ main(int argc, char *argv[])
 				cellside[i] = ldexp(u.size, -i);
 			break;
 		case QT_RING:
-			ringstart(&rec);
-			break;
-		case QT_VERTEX:
-			ringvertex(rec.v);
+			ring(&rec.ring);
 			break;
 		case QT_LEAF:
-			leaf(&r, &rec);
+			leaf(&rec.c);
 			break;
-		case QT_OTHER:
-			other(&r, &rec);
+		case QT_VERTEX:
+			meshvertex(&rec.vertex);
+			break;
+		case QT_ELEM:
+			meshelem(&rec.elem);
 			break;
 		default:
 			break;
 		}
 	}
-	if (!r.haveuniverse)
-		qt_fail(&r, "no universe record");
-	qt_close(&r);
-	meshpaths(name);
+	qt_close(r);
 	if (nflag && nelems == 0 && nleaflabels == 0)
 		warnat(name, 0, "-n: no element numbers in the stream "
 		    "(qtleaves adds them)");

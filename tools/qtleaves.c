@@ -29,7 +29,6 @@
 
 #define GRID	QT_MAXLEVEL
 
-static struct universe u;
 static char keep[256];
 static int mesh, verbose;
 
@@ -38,100 +37,6 @@ usage(void)
 {
 	fprintf(stderr, "usage: qtleaves [-nv] [-c classes] [file]\n");
 	exit(2);
-}
-
-/*
- * Formatting reals is the costliest part of the output, and the same
- * coordinates come back again and again (neighbours share columns and
- * rows), so their text is kept in a small table indexed by a hash of the
- * level and the column or row.
- */
-struct coordtext {
-	uint64_t	key;
-	size_t		len;
-	char		text[32];
-};
-
-#define NCOORDTEXT	4096
-static struct coordtext coordtext[2][NCOORDTEXT];
-static char sizetext[QT_MAXLEVEL + 1][32];
-static size_t sizelen[QT_MAXLEVEL + 1];
-
-static void
-inittext(void)
-{
-	int a, i;
-
-	for (a = 0; a < 2; a++)
-		for (i = 0; i < NCOORDTEXT; i++)
-			coordtext[a][i].key = UINT64_MAX;
-	for (i = 0; i <= QT_MAXLEVEL; i++)
-		sizelen[i] = fmtreal(sizetext[i], ldexp(u.size, -i)) -
-		    sizetext[i];
-}
-
-/* Writes the coordinate of grid line i at level on axis 0 (x) or 1 (y). */
-static char *
-putcoord(char *p, int axis, int level, uint64_t i)
-{
-	uint64_t key = i << 6 | (uint64_t)level;
-	struct coordtext *c;
-
-	c = &coordtext[axis][(key * UINT64_C(0x9E3779B97F4A7C15)) >> 52];
-	if (c->key != key) {
-		double v = cellcoord(axis ? u.y0 : u.x0, u.size, level, i);
-
-		c->key = key;
-		c->len = fmtreal(c->text, v) - c->text;
-	}
-	memcpy(p, c->text, c->len);
-	return p + c->len;
-}
-
-static void
-putleaf(struct qtrec *rec, unsigned long long id)
-{
-	const struct cell *c = &rec->c;
-	size_t n = strlen(c->path);
-	char *p = qt_record(n + 200);	/* path, 5 numbers, 3 reals */
-
-	if (rec->canon) {
-		/* as it would be written: the record up to its class, as read */
-		int i;
-
-		memcpy(p, rec->line, rec->field[8] + 1 - rec->line);
-		for (i = 1; i <= 8; i++)
-			p[rec->field[i] - 1 - rec->line] = ' ';
-		p += rec->field[8] + 1 - rec->line;
-		*p++ = ' ';
-		p = fmtint(p, (long long)id);
-		*p++ = '\n';
-		qt_recorded(p);
-		return;
-	}
-	memcpy(p, "leaf ", 5);
-	p += 5;
-	memcpy(p, c->path, n);
-	p += n;
-	*p++ = ' ';
-	p = fmtint(p, c->level);
-	*p++ = ' ';
-	p = fmtint(p, (long long)c->ix);
-	*p++ = ' ';
-	p = fmtint(p, (long long)c->iy);
-	*p++ = ' ';
-	p = putcoord(p, 0, c->level, c->ix);
-	*p++ = ' ';
-	p = putcoord(p, 1, c->level, c->iy);
-	*p++ = ' ';
-	memcpy(p, sizetext[c->level], sizelen[c->level]);
-	p += sizelen[c->level];
-	*p++ = ' ';
-	*p++ = c->class;
-	*p++ = ' ';
-	p = fmtint(p, (long long)id);
-	*p++ = '\n';
-	qt_recorded(p);
 }
 
 /* Is grid point (ax, ay) before (bx, by) in Z order? */
@@ -270,33 +175,16 @@ meshleaf(const struct cell *c, int kept)
 static void
 writemesh(void)
 {
-	char line[128], *p;
+	unsigned long long v[4];
 	size_t i;
 	int k;
 
-	for (i = 0; i < nvert; i++) {
-		p = line;
-		memcpy(p, "vertex ", 7);
-		p += 7;
-		p = fmtint(p, (long long)(i + 1));
-		*p++ = ' ';
-		p = putcoord(p, 0, GRID, vert[i][0]);
-		*p++ = ' ';
-		p = putcoord(p, 1, GRID, vert[i][1]);
-		qt_raw(line, p - line);
-	}
+	for (i = 0; i < nvert; i++)
+		qt_gridvertex(i + 1, GRID, vert[i][0], vert[i][1]);
 	for (i = 0; i < nelem; i++) {
-		p = line;
-		memcpy(p, "elem ", 5);
-		p += 5;
-		p = fmtint(p, (long long)(i + 1));
-		memcpy(p, " quad", 5);
-		p += 5;
-		for (k = 0; k < 4; k++) {
-			*p++ = ' ';
-			p = fmtint(p, elem[i][k]);
-		}
-		qt_raw(line, p - line);
+		for (k = 0; k < 4; k++)
+			v[k] = elem[i][k];
+		qt_elem(i + 1, "quad", 4, v);
 	}
 }
 
@@ -313,27 +201,16 @@ setclasses(const char *s)
 	}
 }
 
-static int
-istag(const char *line, const char *tag)
-{
-	size_t n = strlen(tag);
-
-	return strncmp(line, tag, n) == 0 &&
-	    (line[n] == ' ' || line[n] == '\0');
-}
-
 int
 main(int argc, char *argv[])
 {
-	struct qtreader r;
+	struct qtreader *r;
+	FILE *fp;
 	struct qtrec rec;
-	struct ring ring;
 	enum qtkind kind;
 	const char *name;
-	size_t vcapring = 0;
 	unsigned long long id = 0;
 	int ch, kept;
-	FILE *fp;
 
 	setprogname_(argv[0]);
 	setclasses("FP");
@@ -357,56 +234,41 @@ main(int argc, char *argv[])
 		usage();
 
 	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	qt_open(&r, fp, name);
-	r.verbose = verbose;
-	memset(&ring, 0, sizeof(ring));
+	r = qt_open(fp, name,
+	    verbose ? QT_VERBOSE : 0);
 	qt_header();
-	while ((kind = qt_read(&r, &rec)) != QT_EOF) {
+	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
 		case QT_UNIVERSE:
-			u = rec.u;
-			inittext();
-			qt_universe(&u);
+			qt_universe(&rec.u);
 			break;
 		case QT_LEVEL:
 			qt_level(rec.level);
 			break;
 		case QT_RING:
-			ring.id = rec.ringid;
-			ring.hole = rec.hole;
-			ring.n = 0;
-			break;
-		case QT_VERTEX:
-			if (ring.n == vcapring) {
-				vcapring = vcapring ? 2 * vcapring : 64;
-				ring.v = xreallocarray(ring.v, vcapring,
-				    sizeof(*ring.v));
-			}
-			ring.v[ring.n++] = rec.v;
-			/* the reader counts the ring's v records for us */
-			if (r.vleft == 0)
-				qt_ring(&ring);
+			qt_ring(&rec.ring);
 			break;
 		case QT_NODE:
 			break;
 		case QT_LEAF:
 			kept = keep[(unsigned char)rec.c.class];
 			if (kept)
-				putleaf(&rec, ++id);
+				qt_cell(&rec.c, ++id);
 			if (mesh)
 				meshleaf(&rec.c, kept);
 			break;
+		case QT_VERTEX:
+		case QT_ELEM:
+			qt_fail(r, "the input already holds a mesh (%s record): "
+			    "qtleaves reads a tree",
+			    kind == QT_ELEM ? "elem" : "vertex");
+			break;
 		default:
-			if (istag(rec.line, "vertex") || istag(rec.line, "elem"))
-				qt_fail(&r, "the input already holds a mesh "
-				    "(%s record): qtleaves reads a tree",
-				    istag(rec.line, "elem") ? "elem" : "vertex");
-			qt_raw(rec.line, rec.len);
+			qt_echo(&rec);
 			break;
 		}
 	}
-	qt_close(&r);
-	free(ring.v);
+	qt_close(r);
 	if (mesh)
 		writemesh();
 	qt_end();

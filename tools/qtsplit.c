@@ -25,8 +25,13 @@ struct edge {
 static struct edge *edges;
 static size_t nedges;
 static struct universe u;
-static int maxlevel = -1, minlevel = 0, verbose;
+static int maxlevel = -1, minlevel = 0, streamlevel = -1, verbose;
 static char path[QT_MAXLEVEL + 2];
+static double step[QT_MAXLEVEL + 1];	/* the cell size at each level */
+
+/* The records written as read: rings, then any others. */
+static struct qtrec **rings, **others;
+static size_t nrings, nothers;
 
 /* Per level: the cell's edges and, per edge, the children it meets. */
 static uint32_t *lists[QT_MAXLEVEL + 2];
@@ -74,6 +79,13 @@ reserve(int level, size_t n)
 }
 
 static void
+keep(struct qtrec ***list, size_t *n, const struct qtrec *rec)
+{
+	*list = xreallocarray(*list, *n + 1, sizeof(**list));
+	(*list)[(*n)++] = qt_keep(rec);
+}
+
+static void
 report(int force)
 {
 	if (verbose)
@@ -81,90 +93,19 @@ report(int force)
 		    deepest);
 }
 
-/*
- * Formatting numbers is the costliest part of the output.  A cell's texts
- * are kept while its subtree is written: the children in column 2ix share
- * the parent's x (2ix * h/2 is ix * h exactly), those in row 2iy its y,
- * so a split formats only the odd column's x and the odd row's y.  Column
- * 2ix + 1 is column 2ix with its last digit, which is even, plus one.
- */
-struct text {
-	char	s[32];
-	size_t	len;
-};
-
-struct childtext {
-	struct text	num[2];	/* 2i and 2i + 1 */
-	struct text	odd;	/* the coordinate of 2i + 1 */
-};
-
-static struct text leveltext[QT_MAXLEVEL + 1], sizetext[QT_MAXLEVEL + 1];
-static struct childtext childx[QT_MAXLEVEL + 1], childy[QT_MAXLEVEL + 1];
-static double step[QT_MAXLEVEL + 1];	/* the cell size at each level */
-
+/* Writes a cell; class 0 for a node. */
 static void
-settext(struct text *t, double v)
+emit(int level, uint64_t ix, uint64_t iy, char class)
 {
-	t->len = fmtreal(t->s, v) - t->s;
-}
+	struct cell c;
 
-static void
-setnum(struct text *t, uint64_t v)
-{
-	t->len = fmtint(t->s, (long long)v) - t->s;
-}
-
-/* Copies all of the text's buffer, a fixed size that compiles to a few
- * moves; the bytes past its length are overwritten by what follows. */
-static char *
-puttext(char *p, const struct text *t)
-{
-	memcpy(p, t->s, sizeof(t->s));
-	return p + t->len;
-}
-
-/* Texts of the children's columns (or rows) 2i and 2i + 1 at level. */
-static void
-setchildren(struct childtext *c, double origin, int level, uint64_t i)
-{
-	setnum(&c->num[0], 2 * i);
-	c->num[1] = c->num[0];
-	c->num[1].s[c->num[1].len - 1]++;
-	settext(&c->odd, origin + (double)(2 * i + 1) * step[level]);
-}
-
-static void
-emit(int level, const struct text *ix, const struct text *iy,
-    const struct text *x, const struct text *y, char class)
-{
-	char *p = qt_record(512);
-
-	memcpy(p, class ? "leaf " : "node ", 5);
-	p += 5;
-	if (level == 0)
-		*p++ = '.';
-	else {
-		memcpy(p, path, level);
-		p += level;
-	}
-	*p++ = ' ';
-	p = puttext(p, &leveltext[level]);
-	*p++ = ' ';
-	p = puttext(p, ix);
-	*p++ = ' ';
-	p = puttext(p, iy);
-	*p++ = ' ';
-	p = puttext(p, x);
-	*p++ = ' ';
-	p = puttext(p, y);
-	*p++ = ' ';
-	p = puttext(p, &sizetext[level]);
-	if (class) {
-		*p++ = ' ';
-		*p++ = class;
-	}
-	*p++ = '\n';
-	qt_recorded(p);
+	c.path = level > 0 ? path : ".";
+	c.level = level;
+	c.ix = ix;
+	c.iy = iy;
+	c.class = class;
+	c.text = NULL;
+	qt_cell(&c, 0);
 	if (level > deepest)
 		deepest = level;
 	if ((++ncells & 0xfffff) == 0)
@@ -291,32 +232,25 @@ splits(int level, size_t n)
 
 /* Writes the cell and its subtree; its edges are lists[level][0..n-1]. */
 static void
-visit(int level, uint64_t ix, uint64_t iy, const struct text *tix,
-    const struct text *tiy, const struct text *x, const struct text *y,
-    size_t n, int inside)
+visit(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
 {
-	struct childtext *cx = &childx[level + 1], *cy = &childy[level + 1];
 	int parity[4], q;
 
 	if (!splits(level, n)) {
-		emit(level, tix, tiy, x, y, n > 0 ? 'P' : inside ? 'F' : 'E');
+		emit(level, ix, iy, n > 0 ? 'P' : inside ? 'F' : 'E');
 		return;
 	}
-	emit(level, tix, tiy, x, y, 0);
+	emit(level, ix, iy, 0);
 	if (n > 0)
 		children(level, ix, iy, n, inside, parity);
 	else
 		parity[0] = parity[1] = parity[2] = parity[3] = inside;
-	setchildren(cx, u.x0, level + 1, ix);
-	setchildren(cy, u.y0, level + 1, iy);
 	for (q = 0; q < 4; q++) {
 		size_t m = n > 0 ? childlist(level, n, q) : 0;
-		int i = q & 1, j = q >> 1;
 
 		path[level] = '0' + q;
 		path[level + 1] = '\0';
-		visit(level + 1, 2 * ix + i, 2 * iy + j, &cx->num[i],
-		    &cy->num[j], i ? &cx->odd : x, j ? &cy->odd : y, m,
+		visit(level + 1, 2 * ix + (q & 1), 2 * iy + (q >> 1), m,
 		    parity[q]);
 	}
 	path[level] = '\0';
@@ -371,37 +305,15 @@ rootlist(void)
 	return n;
 }
 
-struct text_buffer {
-	char	*s;
-	size_t	 len, cap;
-};
-
-/* Keeps a record's text, its fields joined again, newline-terminated. */
 static void
-keeptext(struct text_buffer *b, const struct qtrec *rec)
+addring(const struct ring *ring)
 {
-	size_t i;
-
-	if (b->len + rec->len + 2 > b->cap) {
-		b->cap = 2 * (b->len + rec->len + 2);
-		b->s = xreallocarray(b->s, b->cap, 1);
-	}
-	for (i = 0; i < rec->len; i++)
-		b->s[b->len + i] = rec->line[i] ? rec->line[i] : ' ';
-	b->len += rec->len;
-	b->s[b->len++] = '\n';
-	b->s[b->len] = '\0';
-}
-
-static void
-addring(struct point *v, size_t nv)
-{
-	size_t i;
+	size_t i, nv = ring->n;
 
 	edges = xreallocarray(edges, nedges + nv, sizeof(*edges));
 	for (i = 0; i < nv; i++) {
 		struct edge *e = &edges[nedges++];
-		struct point a = v[i], b = v[(i + 1) % nv];
+		struct point a = ring->v[i], b = ring->v[(i + 1) % nv];
 
 		e->ax = a.x, e->ay = a.y, e->bx = b.x, e->by = b.y;
 		e->xmin = fmin(a.x, b.x), e->xmax = fmax(a.x, b.x);
@@ -409,22 +321,103 @@ addring(struct point *v, size_t nv)
 	}
 }
 
+/*
+ * Reads the stream: its universe, its level, the rings' edges; the rings
+ * and any other records are kept to be written as read, rings first.
+ */
+static void
+readrings(struct qtreader *r)
+{
+	struct qtrec rec;
+	enum qtkind kind;
+
+	while ((kind = qt_read(r, &rec)) != QT_EOF) {
+		switch (kind) {
+		case QT_UNIVERSE:
+			u = rec.u;
+			break;
+		case QT_LEVEL:
+			streamlevel = rec.level;
+			break;
+		case QT_RING:
+			addring(&rec.ring);
+			keep(&rings, &nrings, &rec);
+			break;
+		case QT_NODE:
+		case QT_LEAF:
+			qt_fail(r, "the input already holds cells: qtsplit "
+			    "takes rings");
+			break;
+		default:
+			keep(&others, &nothers, &rec);
+			break;
+		}
+	}
+	if (nedges > UINT32_MAX)
+		die(1, "too many edges: %zu", nedges);
+}
+
+static void
+writehead(void)
+{
+	size_t i;
+
+	qt_header();
+	qt_universe(&u);
+	qt_level(maxlevel);
+	for (i = 0; i < nrings; i++) {
+		qt_echo(rings[i]);
+		qt_free(rings[i]);
+	}
+	for (i = 0; i < nothers; i++) {
+		qt_echo(others[i]);
+		qt_free(others[i]);
+	}
+}
+
+/*
+ * Walks down to the cell at path, as visit would, leaving its edges in
+ * lists[depth][0..*n-1] and its parity in *inside; returns its depth.
+ */
+static int
+descend(const char *subtree, uint64_t *ix, uint64_t *iy, size_t *n,
+    int *inside)
+{
+	int depth = strlen(subtree), i;
+
+	if (strcmp(subtree, ".") == 0)
+		return 0;
+	if (depth > QT_MAXLEVEL || pathcell(subtree, depth, ix, iy) < 0)
+		die(2, "-r: not a cell path: %s", subtree);
+	for (i = 0; i < depth; i++) {
+		int parity[4], q = subtree[i] - '0';
+
+		if (!splits(i, *n))
+			die(1, "-r: no cell %s in the tree: cell %.*s is a leaf",
+			    subtree, i > 0 ? i : 1, i > 0 ? subtree : ".");
+		if (*n > 0)
+			children(i, *ix >> (depth - i), *iy >> (depth - i), *n,
+			    *inside, parity);
+		else
+			parity[q] = *inside;
+		*n = *n > 0 ? childlist(i, *n, q) : 0;
+		*inside = parity[q];
+		path[i] = subtree[i];
+	}
+	path[depth] = '\0';
+	return depth;
+}
+
 int
 main(int argc, char *argv[])
 {
-	struct qtreader r;
-	struct qtrec rec;
-	enum qtkind kind;
-	const char *end, *name, *subtree = NULL;
-	struct text_buffer ringtext = { NULL, 0, 0 };
-	struct point *v = NULL;
-	size_t nv = 0, vcap = 0, n;
-	long long val;
-	uint64_t ix, iy;
-	int ch, streamlevel = -1, inside, level, i;
-	char **kept = NULL;
-	size_t nkept = 0;
+	struct qtreader *r;
 	FILE *fp;
+	const char *end, *name, *subtree = ".";
+	long long val;
+	uint64_t ix = 0, iy = 0;
+	size_t n;
+	int ch, inside, level, i;
 
 	setprogname_(argv[0]);
 	while ((ch = getopt(argc, argv, "l:m:r:v")) != -1)
@@ -455,113 +448,23 @@ main(int argc, char *argv[])
 		usage();
 
 	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	qt_open(&r, fp, name);
-	while ((kind = qt_read(&r, &rec)) != QT_EOF) {
-		switch (kind) {
-		case QT_UNIVERSE:
-			u = rec.u;
-			break;
-		case QT_LEVEL:
-			streamlevel = rec.level;
-			break;
-		case QT_RING:
-			if (nv > 0)
-				addring(v, nv);
-			nv = 0;
-			keeptext(&ringtext, &rec);
-			break;
-		case QT_VERTEX:
-			if (nv == vcap) {
-				vcap = vcap ? 2 * vcap : 64;
-				v = xreallocarray(v, vcap, sizeof(*v));
-			}
-			v[nv++] = rec.v;
-			keeptext(&ringtext, &rec);
-			break;
-		case QT_NODE:
-		case QT_LEAF:
-			qt_fail(&r, "the input already holds cells: qtsplit "
-			    "takes rings");
-			break;
-		default:
-			kept = xreallocarray(kept, nkept + 1, sizeof(*kept));
-			kept[nkept++] = xstrdup(rec.line);
-			break;
-		}
-	}
-	if (!r.haveuniverse)
-		qt_fail(&r, "no universe record");
-	qt_close(&r);
-	if (nv > 0)
-		addring(v, nv);
-	free(v);
-	if (nedges > UINT32_MAX)
-		die(1, "too many edges: %zu", nedges);
+	r = qt_open(fp, name,
+	    QT_NEEDUNIVERSE);
+	readrings(r);
+	qt_close(r);
 	if (maxlevel < 0)
 		maxlevel = streamlevel >= 0 ? streamlevel : 6;
 	if (minlevel > maxlevel)
 		die(2, "-m %d is deeper than the maximum level %d", minlevel,
 		    maxlevel);
-
-	for (i = 0; i <= QT_MAXLEVEL; i++) {
+	for (i = 0; i <= QT_MAXLEVEL; i++)
 		step[i] = ldexp(u.size, -i);
-		settext(&sizetext[i], step[i]);
-		setnum(&leveltext[i], i);
-	}
-	qt_header();
-	qt_universe(&u);
-	qt_level(maxlevel);
-	/* the rings as read: the reader checked them */
-	for (n = 0; n < ringtext.len; ) {
-		size_t eol = n + strcspn(ringtext.s + n, "\n");
 
-		qt_raw(ringtext.s + n, eol - n);
-		n = eol + 1;
-	}
-	free(ringtext.s);
-	for (n = 0; n < nkept; n++) {
-		qt_raw(kept[n], strlen(kept[n]));
-		free(kept[n]);
-	}
-	free(kept);
-
+	writehead();
 	inside = rootparity();
 	n = rootlist();
-	level = 0;
-	ix = iy = 0;
-	if (subtree != NULL && strcmp(subtree, ".") != 0) {
-		int depth = strlen(subtree);
-
-		if (depth > QT_MAXLEVEL || pathcell(subtree, depth, &ix, &iy) < 0)
-			die(2, "-r: not a cell path: %s", subtree);
-		for (i = 0; i < depth; i++) {
-			int parity[4], q = subtree[i] - '0';
-
-			if (!splits(i, n))
-				die(1, "-r: no cell %s in the tree: cell %.*s "
-				    "is a leaf", subtree, i > 0 ? i : 1,
-				    i > 0 ? subtree : ".");
-			if (n > 0)
-				children(i, ix >> (depth - i), iy >> (depth - i),
-				    n, inside, parity);
-			else
-				parity[q] = inside;
-			n = n > 0 ? childlist(i, n, q) : 0;
-			inside = parity[q];
-			path[i] = subtree[i];
-		}
-		path[depth] = '\0';
-		level = depth;
-	}
-	{
-		struct text tix, tiy, x, y;
-
-		setnum(&tix, ix);
-		setnum(&tiy, iy);
-		settext(&x, cellcoord(u.x0, u.size, level, ix));
-		settext(&y, cellcoord(u.y0, u.size, level, iy));
-		visit(level, ix, iy, &tix, &tiy, &x, &y, n, inside);
-	}
+	level = descend(subtree, &ix, &iy, &n, &inside);
+	visit(level, ix, iy, n, inside);
 	qt_end();
 	report(1);
 	closeout();

@@ -20,8 +20,6 @@ static struct universe u;
 
 /* The polygon, summed ring by ring as its records stream past. */
 static struct moments region, ringmo;
-static struct point first, prev;
-static int ringhole, ringstarted;
 static unsigned long long nrings, nholes;
 static double perim, perimlow;	/* a compensated sum */
 
@@ -130,29 +128,25 @@ edge(struct point a, struct point b)
  * outer +, hole -, whatever way it runs.
  */
 static void
-endring(void)
+endring(int hole)
 {
-	int want = ringhole ? -1 : 1, sign;
+	int want = hole ? -1 : 1, sign;
 
-	edge(prev, first);
 	sign = xs_sign(&ringmo.a2);
 	mo_addmo(&region, &ringmo, sign == want || sign == 0 ? 1 : -1);
 	mo_zero(&ringmo);
 }
 
 static void
-ringvertex(struct qtreader *r, struct point v)
+ring(const struct ring *g)
 {
-	if (!ringstarted) {
-		first = v;
-		ringstarted = 1;
-	} else
-		edge(prev, v);
-	prev = v;
-	if (r->vleft == 0) {
-		endring();
-		ringstarted = 0;
-	}
+	size_t i;
+
+	nrings++;
+	nholes += g->hole;
+	for (i = 0; i < g->n; i++)
+		edge(g->v[i], g->v[(i + 1) % g->n]);
+	endring(g->hole);
 }
 
 /* Sets side s to a's entries, then b's. */
@@ -301,63 +295,24 @@ addcell(const struct cell *c)
 	jumpleaf(c->path, c->level);
 }
 
-static unsigned long long
-number(struct qtreader *r, const char *s, const char *what,
-    unsigned long long hi)
-{
-	const char *end;
-	long long v;
-
-	if (parselong(s, &end, &v) < 0 || *end != '\0' || v < 1 ||
-	    (unsigned long long)v > hi)
-		qt_fail(r, "%s is not a number from 1 to %llu: %s", what, hi, s);
-	return v;
-}
-
-static double
-coord(struct qtreader *r, const char *s)
-{
-	const char *end;
-	double v;
-
-	if (parsereal(s, &end, &v) < 0 || *end != '\0')
-		qt_fail(r, "vertex coordinate is not a number: %s", s);
-	if (!coordok(v))
-		qt_fail(r, "vertex coordinate outside the supported range: %s",
-		    s);
-	return v;
-}
-
 static void
-vertexrec(struct qtreader *r, char *line)
+meshvertex(const struct meshvertex *v)
 {
-	char *f[5];
-
-	if (qt_split(r, line, f, 5) != 4)
-		qt_fail(r, "vertex record needs 4 fields: vertex ID X Y");
-	if (number(r, f[1], "vertex ID", UINT32_MAX) != nverts + 1)
-		qt_fail(r, "vertex %s follows vertex %zu", f[1], nverts);
 	if (nverts == vertcap) {
 		vertcap = vertcap ? 2 * vertcap : 1024;
 		verts = xreallocarray(verts, vertcap, sizeof(*verts));
 	}
-	verts[nverts].x = coord(r, f[2]);
-	verts[nverts++].y = coord(r, f[3]);
+	verts[nverts++] = v->p;
 }
 
 static size_t
-typeindex(struct qtreader *r, const char *name)
+typeindex(const char *name)
 {
-	const char *p;
 	size_t i;
 
 	for (i = 0; i < ntypes; i++)
 		if (strcmp(types[i].name, name) == 0)
 			return i;
-	for (p = name; *p >= 'a' && *p <= 'z'; p++)
-		;
-	if (*p != '\0')
-		qt_fail(r, "element type is not a lowercase word: %s", name);
 	types = xreallocarray(types, ntypes + 1, sizeof(*types));
 	types[ntypes].name = xstrdup(name);
 	types[ntypes].n = 0;
@@ -365,23 +320,13 @@ typeindex(struct qtreader *r, const char *name)
 }
 
 static void
-elemrec(struct qtreader *r, char *line)
+meshelem(const struct meshelem *e)
 {
-	char *f[64];
-	int n = qt_split(r, line, f, 64), k;
-	size_t t;
+	size_t k, t = typeindex(e->type);
 
-	if (n < 6)
-		qt_fail(r, "elem record needs at least 6 fields: elem ID TYPE "
-		    "V1 V2 V3 ...");
-	if (number(r, f[1], "element ID", SIZE_MAX - 1) != nelems + 1)
-		qt_fail(r, "elem %s follows elem %zu", f[1], nelems);
-	t = typeindex(r, f[2]);
-	if (strcmp(f[2], "quad") == 0 && n != 7)
-		qt_fail(r, "a quad element has 4 vertices, not %d", n - 3);
 	types[t].n++;
-	if (nrefs + n > refcap) {
-		refcap = 2 * (nrefs + n);
+	if (nrefs + e->n > refcap) {
+		refcap = 2 * (nrefs + e->n);
 		refs = xreallocarray(refs, refcap, sizeof(*refs));
 	}
 	if (nelems + 2 > elemcap) {
@@ -389,25 +334,9 @@ elemrec(struct qtreader *r, char *line)
 		eoff = xreallocarray(eoff, elemcap, sizeof(*eoff));
 	}
 	eoff[nelems] = nrefs;
-	for (k = 3; k < n; k++) {
-		unsigned long long v = number(r, f[k], "vertex number",
-		    UINT32_MAX);
-
-		if (v > nverts)
-			qt_fail(r, "elem %s refers to vertex %llu, which no "
-			    "vertex record before it defines", f[1], v);
-		refs[nrefs++] = v - 1;
-	}
+	for (k = 0; k < e->n; k++)
+		refs[nrefs++] = e->v[k] - 1;
 	eoff[++nelems] = nrefs;
-}
-
-static int
-istag(const char *line, const char *tag)
-{
-	size_t n = strlen(tag);
-
-	return strncmp(line, tag, n) == 0 &&
-	    (line[n] == ' ' || line[n] == '\0');
 }
 
 static void
@@ -422,25 +351,19 @@ readstream(struct qtreader *r)
 			u = rec.u;
 			break;
 		case QT_RING:
-			nrings++;
-			nholes += rec.hole;
-			ringhole = rec.hole;
-			break;
-		case QT_VERTEX:
-			ringvertex(r, rec.v);
+			ring(&rec.ring);
 			break;
 		case QT_NODE:
 		case QT_LEAF:
 			addcell(&rec.c);
 			break;
-		case QT_OTHER:
-			if (istag(rec.line, "vertex")) {
-				vertexrec(r, rec.line);
-				havemesh = 1;
-			} else if (istag(rec.line, "elem")) {
-				elemrec(r, rec.line);
-				havemesh = 1;
-			}
+		case QT_VERTEX:
+			meshvertex(&rec.vertex);
+			havemesh = 1;
+			break;
+		case QT_ELEM:
+			meshelem(&rec.elem);
+			havemesh = 1;
 			break;
 		default:
 			break;
@@ -783,10 +706,10 @@ report(int table)
 int
 main(int argc, char *argv[])
 {
-	struct qtreader r;
+	struct qtreader *r;
+	FILE *fp;
 	const char *name;
 	int ch, table = 0, verbose = 0;
-	FILE *fp;
 
 	setprogname_(argv[0]);
 	while ((ch = getopt(argc, argv, "lv")) != -1)
@@ -808,10 +731,10 @@ main(int argc, char *argv[])
 	mo_init(&region);
 	mo_init(&ringmo);
 	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	qt_open(&r, fp, name);
-	r.verbose = verbose;
-	readstream(&r);
-	qt_close(&r);
+	r = qt_open(fp, name,
+	    verbose ? QT_VERBOSE : 0);
+	readstream(r);
+	qt_close(r);
 	report(table);
 	closeout();
 	return 0;

@@ -1,6 +1,6 @@
 /*
- * fmtreal: the shortest decimal that reads back as a given double, in the
- * layout of printf's %g.
+ * Numbers written.  fmtreal: the shortest decimal that reads back as a
+ * given double, in the layout of printf's %g; fmtint: an integer.
  *
  * The method follows Raffaello Giulietti's Schubfach ("The Schubfach way to
  * render doubles", 2020).  A double v = c 2^q reads back from every decimal
@@ -451,4 +451,30 @@ fmtreal(char *buf, double v)
 	if (doubt)
 		return slowfmt(buf, v, bexp != 0);
 	return layout(buf, (int)(bits >> 63), m, k);
+}
+
+/* Writes v in decimal, two digits a step; returns the terminating NUL. */
+char *
+fmtint(char *buf, long long v)
+{
+	char tmp[24], *t = tmp + sizeof(tmp);
+	unsigned long long u = v < 0 ? -(unsigned long long)v : (unsigned long long)v;
+	size_t n;
+
+	while (u >= 100) {
+		t -= 2;
+		memcpy(t, pairs + 2 * (u % 100), 2);
+		u /= 100;
+	}
+	if (u >= 10) {
+		t -= 2;
+		memcpy(t, pairs + 2 * u, 2);
+	} else
+		*--t = '0' + (char)u;
+	if (v < 0)
+		*buf++ = '-';
+	n = tmp + sizeof(tmp) - t;
+	memcpy(buf, t, n);
+	buf[n] = '\0';
+	return buf + n;
 }

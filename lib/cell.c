@@ -1,0 +1,87 @@
+/* Cell arithmetic: corners, paths, and the order of cells in a stream. */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "qtree.h"
+
+/* Cell corners as qtree(5) defines them: x0 + i * h in double arithmetic. */
+double
+cellcoord(double x0, double size, int level, uint64_t i)
+{
+	double h = ldexp(size, -level);
+
+	return x0 + (double)i * h;
+}
+
+/* Column and row of a path; -1 when the path is malformed for its level. */
+int
+pathcell(const char *path, int level, uint64_t *ix, uint64_t *iy)
+{
+	int i;
+
+	*ix = *iy = 0;
+	if (level == 0)
+		return strcmp(path, ".") == 0 ? 0 : -1;
+	for (i = 0; i < level; i++) {
+		unsigned d = (unsigned char)path[i] - '0';
+
+		if (d > 3)
+			return -1;
+		*ix = *ix << 1 | (d & 1);
+		*iy = *iy << 1 | d >> 1;
+	}
+	return path[level] == '\0' ? 0 : -1;
+}
+
+/*
+ * The length of the longest common prefix of a and b, of at most na and nb
+ * bytes: paths, which in preorder mostly share all but their last digit or
+ * two, so they are compared eight bytes at a time, the last eight too.
+ */
+int
+pathprefix(const char *a, int na, const char *b, int nb)
+{
+	int k = 0, n = na < nb ? na : nb;
+	uint64_t x, y;
+
+	while (k + 8 <= n) {
+		memcpy(&x, a + k, 8);
+		memcpy(&y, b + k, 8);
+		if (x != y)
+			break;
+		k += 8;
+	}
+	if (k < n && k + 8 > n && n >= 8) {	/* no mismatch so far */
+		memcpy(&x, a + n - 8, 8);	/* overlaps the last word */
+		memcpy(&y, b + n - 8, 8);
+		if (x == y)
+			return n;
+	}
+	while (k < n && a[k] == b[k])
+		k++;
+	return k;
+}
+
+/*
+ * The order of two cells in preorder, from their levels and indices alone:
+ * < 0 when a comes first, 0 for the same cell, > 0 when b does.  An
+ * ancestor comes before its descendants; otherwise the digits where the
+ * paths part decide, and they are the bits of the two cells' indices at
+ * the level of their deepest common ancestor.
+ */
+int
+cellcmp(const struct cell *a, const struct cell *b)
+{
+	int l = a->level < b->level ? a->level : b->level;
+	uint64_t ax = a->ix >> (a->level - l), ay = a->iy >> (a->level - l);
+	uint64_t bx = b->ix >> (b->level - l), by = b->iy >> (b->level - l);
+	uint64_t dx = ax ^ bx, dy = ay ^ by;
+
+	if (dx == 0 && dy == 0)
+		return (a->level > b->level) - (a->level < b->level);
+	/* the highest differing bit decides; a y bit outweighs an x bit */
+	if (dy < dx && dy < (dx ^ dy))
+		return ax < bx ? -1 : 1;
+	return ay < by ? -1 : 1;
+}

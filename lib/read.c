@@ -1,0 +1,943 @@
+/*
+ * Reading the qtree(5) format.  Every record is checked against qtree(5)
+ * here, once, for every program.  The common record, a cell spelled as
+ * the writers spell it, is checked in one pass over its bytes against the
+ * texts the writers would print (fastcell); anything else takes the long
+ * way, which parses each field and words the message for a defect.
+ */
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "qtree.h"
+
+enum { BEFORE_HEADER, IN_BODY, AFTER_END };
+
+#define NCOORD	8	/* columns kept per level and axis */
+#define NFIELD	64	/* fields of a record, an elem's at most */
+
+/*
+ * The text of a cell's column or row and of its x, y or size, kept per
+ * level and axis for the last few columns (neighbours share columns and
+ * rows).  Column UINT64_MAX marks an empty entry.
+ */
+struct coordtext {
+	uint64_t	 i;
+	double		 v;
+	size_t		 len, ilen;
+	char		 text[32];	/* of v */
+	char		 itext[24];	/* of i */
+};
+
+struct buf {
+	char	*s;
+	size_t	 len, cap;
+};
+
+struct qtreader {
+	FILE		*fp;
+	const char	*name;
+	int		 flags;
+	long		 lineno;
+	char		*buf;
+	size_t		 cap, pos, end;	/* unread input: buf[pos..end-1] */
+	int		 eof;
+	int		 state;
+	unsigned long long count;	/* records, for the end record */
+	char		*field[NFIELD];
+	int		 nfield;
+	int		 haveuniverse, havelevel, havecells;
+	int		 deepest;	/* the deepest cell's level, -1 before one */
+	struct universe	 u;
+	double		 cellsize[QT_MAXLEVEL + 1];
+	struct coordtext coord[QT_MAXLEVEL + 1][3][NCOORD];
+	/* the last cell: its path, NUL-terminated, and its prefixes' cells */
+	char		 path[QT_MAXLEVEL + 1];
+	int		 pathlen;
+	int		 lastleaf;
+	uint64_t	 pathix[QT_MAXLEVEL + 1], pathiy[QT_MAXLEVEL + 1];
+	/* the ring being read: its vertices and its text */
+	long		 nrings;
+	struct ring	 ring;
+	size_t		 ringcap, vleft;
+	long		 ringline;
+	struct buf	 ringtext;
+	/* the mesh read so far */
+	unsigned long long nvertex, nelem;
+	unsigned long long elemv[NFIELD];
+	char		*type;
+	size_t		 typecap;
+};
+
+struct qtreader *
+qt_open(FILE *fp, const char *name, int flags)
+{
+	struct qtreader *r = xmalloc(sizeof(*r));
+	struct coordtext *k = &r->coord[0][0][0];
+	size_t i;
+
+	memset(r, 0, sizeof(*r));
+	for (i = 0; i < sizeof(r->coord) / sizeof(*k); i++)
+		k[i].i = UINT64_MAX;
+	r->fp = fp;
+	r->name = name;
+	r->flags = flags;
+	r->deepest = -1;
+	r->cap = 1 << 18;
+	r->buf = xmalloc(r->cap);
+	return r;
+}
+
+void
+qt_close(struct qtreader *r)
+{
+	if (r->fp != stdin)
+		fclose(r->fp);
+	free(r->buf);
+	free(r->ring.v);
+	free(r->ringtext.s);
+	free(r->type);
+	free(r);
+}
+
+long
+qt_lineno(const struct qtreader *r)
+{
+	return r->lineno;
+}
+
+void
+qt_fail(const struct qtreader *r, const char *fmt, ...)
+{
+	va_list ap;
+	char msg[512];
+
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof(msg), fmt, ap);
+	va_end(ap);
+	errat(r->name, r->lineno, "%s", msg);
+}
+
+/* Progress for -v: now and then, and at the end of the stream. */
+static void
+report(const struct qtreader *r, int force)
+{
+	if (!(r->flags & QT_VERBOSE))
+		return;
+	if (r->deepest >= 0)
+		progress(force, "%llu records read, deepest level %d", r->count,
+		    r->deepest);
+	else
+		progress(force, "%llu records read", r->count);
+}
+
+/* A real field of a record: a coordinate within the supported range. */
+static double
+realfield(struct qtreader *r, const char *s, const char *what)
+{
+	const char *end;
+	double v;
+	int rc = parsereal(s, &end, &v);
+
+	if (rc == -2)
+		qt_fail(r, "%s out of range: %s", what, s);
+	if (rc < 0 || *end != '\0')
+		qt_fail(r, "%s is not a number: %s", what, s);
+	if (!coordok(v))
+		qt_fail(r, "%s outside the supported range "
+		    "(0 or 1e-100 to 1e100 in magnitude): %s", what, s);
+	return v;
+}
+
+static long long
+intfield(struct qtreader *r, const char *s, const char *what, long long lo,
+    long long hi)
+{
+	const char *end;
+	long long v;
+
+	if (parselong(s, &end, &v) < 0 || *end != '\0')
+		qt_fail(r, "%s is not an integer: %s", what, s);
+	if (v < lo || v > hi)
+		qt_fail(r, "%s out of range %lld to %lld: %s", what, lo, hi, s);
+	return v;
+}
+
+static void
+nfields(struct qtreader *r, int lo, int hi)
+{
+	if (r->nfield < lo || r->nfield > hi)
+		qt_fail(r, "%s record has %d fields, expected %d",
+		    r->field[0], r->nfield, hi);
+}
+
+/*
+ * Splits a record at single spaces into fields, refusing empty ones; the
+ * spaces become NULs until unsplit puts them back.
+ */
+static void
+split(struct qtreader *r, char *line)
+{
+	int n = 0, i;
+
+	for (;;) {
+		if (n == NFIELD)
+			qt_fail(r, "too many fields");
+		r->field[n++] = line;
+		if ((line = strchr(line, ' ')) == NULL)
+			break;
+		*line++ = '\0';
+	}
+	r->nfield = n;
+	for (i = 0; i < n; i++)
+		if (r->field[i][0] == '\0')
+			qt_fail(r, "empty field (fields are separated by one "
+			    "space)");
+}
+
+static void
+unsplit(struct qtreader *r)
+{
+	int i;
+
+	for (i = 1; i < r->nfield; i++)
+		r->field[i][-1] = ' ';
+}
+
+static void
+append(struct buf *b, const char *s, size_t n)
+{
+	if (b->len + n > b->cap) {
+		b->cap = 2 * (b->len + n);
+		b->s = xreallocarray(b->s, b->cap, 1);
+	}
+	memcpy(b->s + b->len, s, n);
+	b->len += n;
+}
+
+/* The entry for column i at level on axis 0 (x), 1 (y) or 2 (size). */
+static const struct coordtext *
+coordmiss(struct qtreader *r, int level, int axis, uint64_t i, double v)
+{
+	struct coordtext *k = &r->coord[level][axis][i % NCOORD], *up;
+
+	k->i = i;
+	k->v = v;
+	/* column 2j at this level is column j a level up, bit for bit */
+	up = level > 0 && axis < 2 && !(i & 1) ?
+	    &r->coord[level - 1][axis][(i >> 1) % NCOORD] : NULL;
+	if (up != NULL && up->i == i >> 1) {
+		memcpy(k->text, up->text, sizeof(k->text));
+		k->len = up->len;
+	} else
+		k->len = fmtreal(k->text, v) - k->text;
+	k->ilen = fmtint(k->itext, (long long)i) - k->itext;
+	return k;
+}
+
+static inline const struct coordtext *
+coordtext(struct qtreader *r, int level, int axis, uint64_t i, double v)
+{
+	const struct coordtext *k = &r->coord[level][axis][i % NCOORD];
+
+	return k->i == i ? k : coordmiss(r, level, axis, i, v);
+}
+
+/* Reads a cell's x, y or size, which must be v; returns whether it is. */
+static int
+coordfield(struct qtreader *r, const char *text, int level, int axis,
+    uint64_t i, double v, double *out)
+{
+	const struct coordtext *k = coordtext(r, level, axis, i, v);
+
+	if (strcmp(text, k->text) == 0) {
+		*out = v;
+		return 1;
+	}
+	*out = realfield(r, text, axis == 0 ? "x" : axis == 1 ? "y" : "size");
+	return *out == v;
+}
+
+enum { FOLLOWS, INLEAF, PRECEDES };
+
+/*
+ * Where a cell of path (n digits, the first k shared with the last cell's)
+ * stands: in preorder it must be a descendant of the last cell, which is
+ * not a leaf, or on a later branch.
+ */
+static int
+cellorder(const struct qtreader *r, const char *path, int n, int k)
+{
+	if (!r->havecells)
+		return FOLLOWS;
+	if (k == r->pathlen && n > k)
+		return r->lastleaf ? INLEAF : FOLLOWS;
+	if (k < r->pathlen && k < n && path[k] > r->path[k])
+		return FOLLOWS;
+	return PRECEDES;
+}
+
+/* Keeps the cell just read as the last one. */
+static void
+setlast(struct qtreader *r, const struct cell *c, int from)
+{
+	int k;
+
+	for (k = from; k < c->level; k++)	/* a digit or two, mostly */
+		r->path[k] = c->path[k];
+	r->path[c->level] = '\0';
+	r->pathlen = c->level;
+	r->lastleaf = c->class != 0;
+	if (c->level > r->deepest)
+		r->deepest = c->level;
+	r->havecells = 1;
+}
+
+/* The prefixes' columns and rows of the path just read, from depth k. */
+static void
+setprefixes(struct qtreader *r, const char *path, int n, int k)
+{
+	for (; k < n; k++) {
+		unsigned d = path[k] - '0';
+
+		r->pathix[k + 1] = r->pathix[k] << 1 | (d & 1);
+		r->pathiy[k + 1] = r->pathiy[k] << 1 | d >> 1;
+	}
+}
+
+static void
+cellrec(struct qtreader *r, struct qtrec *rec)
+{
+	struct cell *c = &rec->c;
+	const char *tag = r->field[0], *path = r->field[1];
+	uint64_t ix, iy;
+	unsigned long long lim;
+	double x, y, size;
+	int level, k;
+
+	if (rec->kind == QT_LEAF)
+		nfields(r, 9, 10);
+	else
+		nfields(r, 8, 8);
+	if (!r->haveuniverse)
+		qt_fail(r, "%s record before the universe record", tag);
+	level = intfield(r, r->field[2], "level", 0, QT_MAXLEVEL);
+	if (pathcell(path, level, &ix, &iy) < 0)
+		qt_fail(r, "path %s does not fit level %d", path, level);
+	k = level > 0 ? pathprefix(path, level, r->path, r->pathlen) : 0;
+	switch (cellorder(r, level > 0 ? path : "", level, k)) {
+	case INLEAF:
+		qt_fail(r, "cell %s lies inside leaf %s", path,
+		    r->pathlen > 0 ? r->path : ".");
+		break;
+	case PRECEDES:
+		qt_fail(r, "cell %s does not follow cell %s in preorder",
+		    path, r->pathlen > 0 ? r->path : ".");
+		break;
+	}
+	c->path = path;
+	c->level = level;
+	c->class = rec->kind == QT_LEAF;	/* a leaf, for setlast */
+	setlast(r, c, k);
+	setprefixes(r, path, level, k);
+	c->path = level > 0 ? r->path : ".";
+	lim = ((unsigned long long)1 << level) - 1;
+	c->ix = intfield(r, r->field[3], "ix", 0, lim);
+	c->iy = intfield(r, r->field[4], "iy", 0, lim);
+	if (c->ix != ix || c->iy != iy)
+		qt_fail(r, "cell %s is at column %llu row %llu, not %s %s",
+		    c->path, (unsigned long long)ix, (unsigned long long)iy,
+		    r->field[3], r->field[4]);
+	size = r->cellsize[level];
+	x = r->u.x0 + (double)ix * size;
+	y = r->u.y0 + (double)iy * size;
+	if (!coordfield(r, r->field[5], level, 0, ix, x, &c->x) ||
+	    !coordfield(r, r->field[6], level, 1, iy, y, &c->y) ||
+	    !coordfield(r, r->field[7], level, 2, 0, size, &c->size)) {
+		char bx[32], by[32], bs[32];
+
+		fmtreal(bx, x);
+		fmtreal(by, y);
+		fmtreal(bs, size);
+		qt_fail(r, "cell %s lies at %s %s size %s in this universe",
+		    c->path, bx, by, bs);
+	}
+	c->class = 0;
+	c->id = 0;
+	if (rec->kind == QT_LEAF) {
+		const char *s = r->field[8];
+
+		if ((s[0] != 'F' && s[0] != 'E' && s[0] != 'P') || s[1] != '\0')
+			qt_fail(r, "leaf class is not F, E or P: %s", s);
+		c->class = s[0];
+		if (r->nfield == 10)
+			c->id = intfield(r, r->field[9], "element id", 1,
+			    LLONG_MAX);
+	}
+	c->text = NULL;
+	c->textlen = 0;
+}
+
+/*
+ * The path at p as the writers spell it, then a space, of a cell that
+ * follows the last one in preorder: its column and row come from the last
+ * path's prefix, which it shares, and *common is that prefix's length.
+ * Returns the level, -1 for anything else.
+ */
+static inline int
+fastpath(struct qtreader *r, const char **pp, const char *end, uint64_t *ix,
+    uint64_t *iy, int *common)
+{
+	const char *p = *pp;
+	int j, k;
+	unsigned d;
+
+	if (p[0] == '.') {
+		if (p[1] != ' ' || r->havecells)
+			return -1;
+		*pp = p + 2;
+		*ix = *iy = 0;
+		*common = 0;
+		return 0;
+	}
+	k = pathprefix(p, (int)(end - p), r->path, r->pathlen);
+	/* the prefixes past k are the new path's from here on */
+	for (j = k; (d = (unsigned char)p[j] - '0') <= 3 && j < QT_MAXLEVEL;
+	    j++) {
+		r->pathix[j + 1] = r->pathix[j] << 1 | (d & 1);
+		r->pathiy[j + 1] = r->pathiy[j] << 1 | d >> 1;
+	}
+	if (j == 0 || p[j] != ' ' || cellorder(r, p, j, k) != FOLLOWS)
+		return -1;
+	*pp = p + j + 1;
+	*ix = r->pathix[j];
+	*iy = r->pathiy[j];
+	*common = k;
+	return j;
+}
+
+/* Whether the n bytes at a are those at b, n < 32; a word at a time. */
+static inline int
+sametext(const char *a, const char *b, size_t n)
+{
+	uint64_t x, y;
+	uint32_t u, v;
+	size_t i;
+
+	if (n >= 8) {
+		for (i = 0; i + 8 < n; i += 8) {
+			memcpy(&x, a + i, 8);
+			memcpy(&y, b + i, 8);
+			if (x != y)
+				return 0;
+		}
+		memcpy(&x, a + n - 8, 8);	/* the last word may overlap */
+		memcpy(&y, b + n - 8, 8);
+		return x == y;
+	}
+	if (n >= 4) {
+		memcpy(&u, a, 4);
+		memcpy(&v, b, 4);
+		if (u != v)
+			return 0;
+		memcpy(&u, a + n - 4, 4);
+		memcpy(&v, b + n - 4, 4);
+		return u == v;
+	}
+	for (i = 0; i < n; i++)
+		if (a[i] != b[i])
+			return 0;
+	return 1;
+}
+
+/*
+ * The n bytes of text at p, then a space or, when last, the end of the
+ * line: returns what follows, NULL for any other text.
+ */
+static inline const char *
+fasttext(const char *p, const char *end, const char *text, size_t n,
+    int last)
+{
+	if ((size_t)(end - p) < n || !sametext(p, text, n))
+		return NULL;
+	p += n;
+	if (last ? p != end : *p != ' ')
+		return NULL;
+	return p + 1;
+}
+
+/* A level as the writers spell it, then a space. */
+static inline const char *
+fastlevel(const char *p, int level)
+{
+	if (level >= 10 && *p++ != '0' + level / 10)
+		return NULL;
+	if (p[0] != '0' + level % 10 || p[1] != ' ')
+		return NULL;
+	return p + 2;
+}
+
+/* An element number as the writers spell it, ending the line. */
+static inline int
+fastid(const char *p, const char *end, unsigned long long *id)
+{
+	unsigned long long v = 0;
+	unsigned d;
+
+	if (p == end || *p == '0' || end - p > 18)
+		return 0;
+	for (; p < end; p++) {
+		if ((d = (unsigned char)*p - '0') > 9)
+			return 0;
+		v = v * 10 + d;
+	}
+	*id = v;
+	return 1;
+}
+
+/*
+ * The common record, a cell spelled as the writers spell it, checked in
+ * one pass over its bytes.  Returns 0 for anything else, and the record
+ * takes the long way.
+ */
+static int
+fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
+{
+	struct cell *c = &rec->c;
+	const char *p = line + 5, *end = line + len, *path = p;
+	const struct coordtext *kx, *ky, *ks;
+	uint64_t ix, iy;
+	double size;
+	int level, common;
+
+	if (memcmp(line, "leaf ", 5) == 0)
+		rec->kind = QT_LEAF;
+	else if (memcmp(line, "node ", 5) == 0)
+		rec->kind = QT_NODE;
+	else
+		return 0;
+	if (!r->haveuniverse || r->vleft > 0)
+		return 0;
+	if ((level = fastpath(r, &p, end, &ix, &iy, &common)) < 0)
+		return 0;
+	size = r->cellsize[level];
+	kx = coordtext(r, level, 0, ix, r->u.x0 + (double)ix * size);
+	ky = coordtext(r, level, 1, iy, r->u.y0 + (double)iy * size);
+	ks = coordtext(r, level, 2, 0, size);
+	if ((p = fastlevel(p, level)) == NULL ||
+	    (p = fasttext(p, end, kx->itext, kx->ilen, 0)) == NULL ||
+	    (p = fasttext(p, end, ky->itext, ky->ilen, 0)) == NULL ||
+	    (p = fasttext(p, end, kx->text, kx->len, 0)) == NULL ||
+	    (p = fasttext(p, end, ky->text, ky->len, 0)) == NULL ||
+	    (p = fasttext(p, end, ks->text, ks->len,
+	    rec->kind == QT_NODE)) == NULL)
+		return 0;
+	c->class = 0;
+	c->id = 0;
+	if (rec->kind == QT_LEAF) {
+		if (*p != 'F' && *p != 'E' && *p != 'P')
+			return 0;
+		c->class = *p++;
+		if (p != end && (*p != ' ' || !fastid(p + 1, end, &c->id)))
+			return 0;
+		c->textlen = (p - line);
+	} else
+		c->textlen = len;
+	c->text = line;
+	c->level = level;
+	c->path = path;
+	setlast(r, c, common);
+	c->path = level > 0 ? r->path : ".";
+	c->ix = ix;
+	c->iy = iy;
+	c->x = kx->v;
+	c->y = ky->v;
+	c->size = size;
+	return 1;
+}
+
+static void
+universerec(struct qtreader *r, struct qtrec *rec)
+{
+	int i;
+
+	nfields(r, 4, 4);
+	if (r->haveuniverse)
+		qt_fail(r, "second universe record");
+	if (r->nrings > 0 || r->havecells)
+		qt_fail(r, "universe record after rings or cells");
+	rec->u.x0 = realfield(r, r->field[1], "x0");
+	rec->u.y0 = realfield(r, r->field[2], "y0");
+	rec->u.size = realfield(r, r->field[3], "size");
+	if (rec->u.size <= 0)
+		qt_fail(r, "universe size is not positive");
+	r->u = rec->u;
+	r->haveuniverse = 1;
+	for (i = 0; i <= QT_MAXLEVEL; i++)
+		r->cellsize[i] = ldexp(r->u.size, -i);
+}
+
+static void
+levelrec(struct qtreader *r, struct qtrec *rec)
+{
+	nfields(r, 2, 2);
+	if (r->havelevel)
+		qt_fail(r, "second level record");
+	if (r->havecells)
+		qt_fail(r, "level record after cells");
+	rec->level = intfield(r, r->field[1], "level", 0, QT_MAXLEVEL);
+	r->havelevel = 1;
+}
+
+static void
+ringrec(struct qtreader *r)
+{
+	struct ring *g = &r->ring;
+
+	nfields(r, 4, 4);
+	if (!r->haveuniverse)
+		qt_fail(r, "ring record before the universe record");
+	if (r->havecells)
+		qt_fail(r, "ring record after cells");
+	g->id = intfield(r, r->field[1], "ring id", 1, (long long)1 << 40);
+	if (g->id != r->nrings + 1)
+		qt_fail(r, "ring %ld follows ring %ld", g->id, r->nrings);
+	if (strcmp(r->field[2], "outer") == 0)
+		g->hole = 0;
+	else if (strcmp(r->field[2], "hole") == 0)
+		g->hole = 1;
+	else
+		qt_fail(r, "ring kind is not outer or hole: %s", r->field[2]);
+	r->vleft = intfield(r, r->field[3], "vertex count", 3,
+	    (long long)1 << 40);
+	g->n = 0;
+	r->nrings++;
+	r->ringline = r->lineno;
+	r->ringtext.len = 0;
+}
+
+/* A vertex of the ring being read; the last one completes it. */
+static int
+vrec(struct qtreader *r)
+{
+	struct ring *g = &r->ring;
+
+	nfields(r, 3, 3);
+	if (r->vleft == 0)
+		qt_fail(r, "v record outside a ring");
+	if (g->n == r->ringcap) {
+		r->ringcap = r->ringcap ? 2 * r->ringcap : 64;
+		g->v = xreallocarray(g->v, r->ringcap, sizeof(*g->v));
+	}
+	g->v[g->n].x = realfield(r, r->field[1], "x");
+	g->v[g->n].y = realfield(r, r->field[2], "y");
+	g->n++;
+	return --r->vleft == 0;
+}
+
+static void
+vertexrec(struct qtreader *r, struct qtrec *rec)
+{
+	struct meshvertex *v = &rec->vertex;
+
+	nfields(r, 4, 4);
+	if (!r->haveuniverse)
+		qt_fail(r, "vertex record before the universe record");
+	v->id = intfield(r, r->field[1], "vertex id", 1, LLONG_MAX);
+	if (v->id != r->nvertex + 1)
+		qt_fail(r, "vertex %s follows vertex %llu", r->field[1],
+		    r->nvertex);
+	v->p.x = realfield(r, r->field[2], "x");
+	v->p.y = realfield(r, r->field[3], "y");
+	if (v->p.x < r->u.x0 || v->p.x - r->u.x0 > r->u.size ||
+	    v->p.y < r->u.y0 || v->p.y - r->u.y0 > r->u.size)
+		qt_fail(r, "vertex %s lies outside the universe", r->field[1]);
+	r->nvertex++;
+}
+
+/* Element types are lowercase words; these have a fixed vertex count. */
+static int
+typevertices(const char *type)
+{
+	return strcmp(type, "quad") == 0 ? 4 : strcmp(type, "tri") == 0 ?
+	    3 : 0;
+}
+
+static void
+elemrec(struct qtreader *r, struct qtrec *rec)
+{
+	struct meshelem *e = &rec->elem;
+	const char *p, *type;
+	size_t n;
+	int i, want;
+
+	if (r->nfield < 6)
+		qt_fail(r, "elem record has %d fields, expected at least 6",
+		    r->nfield);
+	e->id = intfield(r, r->field[1], "element id", 1, LLONG_MAX);
+	if (e->id != r->nelem + 1)
+		qt_fail(r, "elem %s follows elem %llu", r->field[1], r->nelem);
+	type = r->field[2];
+	for (p = type; (*p >= 'a' && *p <= 'z') ||
+	    (p > type && *p >= '0' && *p <= '9'); p++)
+		;
+	if (*p != '\0')
+		qt_fail(r, "element type is not a lowercase word: %s", type);
+	want = typevertices(type);
+	if (want > 0 && r->nfield != 3 + want)
+		qt_fail(r, "%s element has %d vertices, expected %d", type,
+		    r->nfield - 3, want);
+	for (i = 3; i < r->nfield; i++) {
+		unsigned long long v = intfield(r, r->field[i], "vertex id", 1,
+		    LLONG_MAX);
+
+		if (v > r->nvertex)
+			qt_fail(r, "elem %s refers to vertex %llu, which no "
+			    "vertex record before it defines", r->field[1], v);
+		r->elemv[i - 3] = v;
+	}
+	n = strlen(type) + 1;
+	if (n > r->typecap) {
+		r->typecap = 2 * n;
+		r->type = xreallocarray(r->type, r->typecap, 1);
+	}
+	e->type = memcpy(r->type, type, n);
+	e->n = r->nfield - 3;
+	e->v = r->elemv;
+	r->nelem++;
+}
+
+static const struct {
+	const char	*tag;
+	size_t		 len;
+	enum qtkind	 kind;
+} tags[] = {
+	{ "leaf", 4, QT_LEAF }, { "node", 4, QT_NODE }, { "v", 1, QT_RING },
+	{ "ring", 4, QT_RING }, { "vertex", 6, QT_VERTEX },
+	{ "elem", 4, QT_ELEM }, { "level", 5, QT_LEVEL },
+	{ "universe", 8, QT_UNIVERSE },
+};
+
+static enum qtkind
+tagkind(const char *line, size_t taglen)
+{
+	size_t i;
+
+	for (i = 0; i < sizeof(tags) / sizeof(tags[0]); i++)
+		if (tags[i].len == taglen &&
+		    memcmp(tags[i].tag, line, taglen) == 0)
+			return tags[i].kind;
+	return QT_OTHER;
+}
+
+static void
+endrec(struct qtreader *r, const char *line)
+{
+	const char *end;
+	long long count;
+
+	if (strncmp(line, "end ", 4) != 0 ||
+	    parselong(line + 4, &end, &count) < 0 || *end != '\0')
+		qt_fail(r, "malformed end record");
+	if (count < 0 || (unsigned long long)count != r->count)
+		qt_fail(r, "end record counts %lld records, the stream "
+		    "has %llu", count, r->count);
+	r->state = AFTER_END;
+}
+
+/*
+ * A record of the body the long way.  Returns its kind, QT_EOF for the
+ * end record, and 0 for a v record that leaves its ring unfinished.
+ */
+static enum qtkind
+body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
+{
+	size_t taglen = strcspn(line, " ");
+	int isv = taglen == 1 && line[0] == 'v';
+
+	rec->kind = tagkind(line, taglen);
+	if (r->vleft > 0 && !isv)
+		qt_fail(r, "ring %ld is missing %zu of its v records",
+		    r->nrings, r->vleft);
+	if (taglen == 3 && strncmp(line, "end", 3) == 0) {
+		endrec(r, line);
+		return QT_EOF;
+	}
+	if (taglen == 5 && strncmp(line, "qtree", 5) == 0)
+		qt_fail(r, "qtree header inside the stream");
+	if (taglen == 0)
+		qt_fail(r, "record without a tag");
+	r->count++;
+	rec->line = line;
+	rec->len = len;
+	rec->lineno = r->lineno;
+	rec->nrec = 1;
+	if (rec->kind == QT_OTHER)
+		return QT_OTHER;	/* not split: for other programs */
+	split(r, line);
+	switch (rec->kind) {
+	case QT_UNIVERSE:
+		universerec(r, rec);
+		break;
+	case QT_LEVEL:
+		levelrec(r, rec);
+		break;
+	case QT_RING:
+		if (isv ? !vrec(r) : (ringrec(r), 1)) {
+			unsplit(r);
+			append(&r->ringtext, line, len);
+			append(&r->ringtext, "\n", 1);
+			return 0;
+		}
+		break;
+	case QT_NODE:
+	case QT_LEAF:
+		cellrec(r, rec);
+		break;
+	case QT_VERTEX:
+		vertexrec(r, rec);
+		break;
+	case QT_ELEM:
+		elemrec(r, rec);
+		break;
+	default:
+		break;
+	}
+	unsplit(r);
+	if (rec->kind == QT_RING) {	/* its last vertex: the ring is whole */
+		append(&r->ringtext, line, len);
+		rec->ring = r->ring;
+		rec->line = r->ringtext.s;
+		rec->len = r->ringtext.len;
+		rec->lineno = r->ringline;
+		rec->nrec = 1 + r->ring.n;
+	}
+	return rec->kind;
+}
+
+/*
+ * The next line, without its newline and NUL-terminated, in *len bytes;
+ * NULL at the end of the input.  Input comes in large reads, returned as
+ * soon as they hold a line, so a pipe streams.
+ */
+static char *
+readline(struct qtreader *r, size_t *len)
+{
+	char *line, *nl;
+	size_t scanned = 0;
+	ssize_t n;
+
+	for (;;) {
+		line = r->buf + r->pos;
+		nl = memchr(line + scanned, '\n', r->end - r->pos - scanned);
+		if (nl != NULL) {
+			*nl = '\0';
+			*len = nl - line;
+			r->pos += *len + 1;
+			return line;
+		}
+		scanned = r->end - r->pos;
+		if (r->eof) {
+			if (scanned == 0)
+				return NULL;
+			line[scanned] = '\0';	/* a last line without newline */
+			*len = scanned;
+			r->pos = r->end;
+			return line;
+		}
+		if (r->pos > 0) {
+			memmove(r->buf, line, scanned);
+			r->pos = 0;
+			r->end = scanned;
+		}
+		if (r->cap - r->end < 4096) {
+			r->buf = xreallocarray(r->buf, r->cap, 2);
+			r->cap *= 2;
+		}
+		do
+			n = read(fileno(r->fp), r->buf + r->end,
+			    r->cap - 1 - r->end);
+		while (n < 0 && errno == EINTR);
+		if (n < 0)
+			errat(r->name, 0, "read error: %s", strerror(errno));
+		if (n == 0)
+			r->eof = 1;
+		r->end += n;
+	}
+}
+
+static void
+header(struct qtreader *r, const char *line)
+{
+	if (strncmp(line, "qtree ", 6) != 0)
+		qt_fail(r, "not a qtree stream (no qtree header)");
+	if (strcmp(line + 6, "1") != 0)
+		qt_fail(r, "unsupported qtree version: %s", line + 6);
+	r->state = IN_BODY;
+}
+
+/* At the end of the input: it must have ended the stream. */
+static void
+atend(struct qtreader *r)
+{
+	if (r->state == BEFORE_HEADER)
+		qt_fail(r, "empty input: not a qtree stream");
+	if (r->state != AFTER_END)
+		qt_fail(r, "truncated stream: no end record");
+	if ((r->flags & QT_NEEDUNIVERSE) && !r->haveuniverse)
+		qt_fail(r, "no universe record");
+	report(r, 1);
+}
+
+/*
+ * Returns the next record, QT_EOF after a valid end record.  Every defect
+ * of the stream is reported here with the file and line, and exits 1.
+ */
+enum qtkind
+qt_read(struct qtreader *r, struct qtrec *rec)
+{
+	enum qtkind kind;
+	char *line;
+	size_t n = 0;
+
+	for (;;) {
+		if ((line = readline(r, &n)) == NULL) {
+			atend(r);
+			return QT_EOF;
+		}
+		r->lineno++;
+		if (r->state == IN_BODY && n > 5 && fastcell(r, rec, line, n)) {
+			rec->line = line;
+			rec->len = n;
+			rec->lineno = r->lineno;
+			rec->nrec = 1;
+			if ((++r->count & 0xfffff) == 0)
+				report(r, 0);
+			return rec->kind;
+		}
+		if (strlen(line) != n)
+			qt_fail(r, "NUL byte in line");
+		if (line[0] == '#')
+			continue;
+		switch (r->state) {
+		case BEFORE_HEADER:
+			header(r, line);
+			break;
+		case AFTER_END:
+			qt_fail(r, "data after the end record");
+			break;
+		default:
+			if ((kind = body(r, rec, line, n)) == 0 ||
+			    kind == QT_EOF)
+				continue;	/* after the end, EOF must follow */
+			if ((r->count & 0xfffff) == 0)
+				report(r, 0);
+			return kind;
+		}
+	}
+}
