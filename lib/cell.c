@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "qtree.h"
+#include "celltext.h"
 
 /* Cell corners as qtree(5) defines them: x0 + i * h in double arithmetic. */
 double
@@ -84,4 +85,45 @@ cellcmp(const struct cell *a, const struct cell *b)
 	if (dy < dx && dy < (dx ^ dy))
 		return ax < bx ? -1 : 1;
 	return ay < by ? -1 : 1;
+}
+
+void
+celltext_init(struct celltext *t, const struct universe *u)
+{
+	struct coordtext *k = &t->coord[0][0][0];
+	size_t i;
+
+	t->u = *u;
+	for (i = 0; i <= QT_MAXLEVEL; i++)
+		t->size[i] = ldexp(u->size, -(int)i);
+	for (i = 0; i < sizeof(t->coord) / sizeof(*k); i++)
+		k[i].i = UINT64_MAX;
+}
+
+const struct coordtext *
+celltext_miss(struct celltext *t, int level, int axis, uint64_t i)
+{
+	struct coordtext *k = &t->coord[level][axis][i % NCOORD];
+	const struct coordtext *up, *prev;
+
+	k->i = i;
+	k->v = axis == 2 ? t->size[level] :
+	    (axis ? t->u.y0 : t->u.x0) + (double)i * t->size[level];
+	/* column 2j at this level is column j a level up, bit for bit */
+	up = level > 0 && axis < 2 && !(i & 1) ?
+	    &t->coord[level - 1][axis][(i >> 1) % NCOORD] : NULL;
+	if (up != NULL && up->i == i >> 1) {
+		memcpy(k->text, up->text, sizeof(k->text));
+		k->len = up->len;
+	} else
+		k->len = fmtreal(k->text, k->v) - k->text;
+	/* 2j + 1 is 2j, whose last digit is even, with that digit plus one */
+	prev = i & 1 ? &t->coord[level][axis][(i - 1) % NCOORD] : NULL;
+	if (prev != NULL && prev->i == i - 1) {
+		memcpy(k->itext, prev->itext, sizeof(k->itext));
+		k->ilen = prev->ilen;
+		k->itext[k->ilen - 1]++;
+	} else
+		k->ilen = fmtint(k->itext, (long long)i) - k->itext;
+	return k;
 }

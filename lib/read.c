@@ -15,24 +15,11 @@
 #include <unistd.h>
 
 #include "qtree.h"
+#include "celltext.h"
 
 enum { BEFORE_HEADER, IN_BODY, AFTER_END };
 
-#define NCOORD	8	/* columns kept per level and axis */
 #define NFIELD	64	/* fields of a record, an elem's at most */
-
-/*
- * The text of a cell's column or row and of its x, y or size, kept per
- * level and axis for the last few columns (neighbours share columns and
- * rows).  Column UINT64_MAX marks an empty entry.
- */
-struct coordtext {
-	uint64_t	 i;
-	double		 v;
-	size_t		 len, ilen;
-	char		 text[32];	/* of v */
-	char		 itext[24];	/* of i */
-};
 
 struct buf {
 	char	*s;
@@ -54,8 +41,7 @@ struct qtreader {
 	int		 haveuniverse, havelevel, havecells;
 	int		 deepest;	/* the deepest cell's level, -1 before one */
 	struct universe	 u;
-	double		 cellsize[QT_MAXLEVEL + 1];
-	struct coordtext coord[QT_MAXLEVEL + 1][3][NCOORD];
+	struct celltext	 text;
 	/* the last cell: its path, NUL-terminated, and its prefixes' cells */
 	char		 path[QT_MAXLEVEL + 1];
 	int		 pathlen;
@@ -78,12 +64,8 @@ struct qtreader *
 qt_open(FILE *fp, const char *name, int flags)
 {
 	struct qtreader *r = xmalloc(sizeof(*r));
-	struct coordtext *k = &r->coord[0][0][0];
-	size_t i;
 
 	memset(r, 0, sizeof(*r));
-	for (i = 0; i < sizeof(r->coord) / sizeof(*k); i++)
-		k[i].i = UINT64_MAX;
 	r->fp = fp;
 	r->name = name;
 	r->flags = flags;
@@ -220,47 +202,19 @@ append(struct buf *b, const char *s, size_t n)
 	b->len += n;
 }
 
-/* The entry for column i at level on axis 0 (x), 1 (y) or 2 (size). */
-static const struct coordtext *
-coordmiss(struct qtreader *r, int level, int axis, uint64_t i, double v)
-{
-	struct coordtext *k = &r->coord[level][axis][i % NCOORD], *up;
-
-	k->i = i;
-	k->v = v;
-	/* column 2j at this level is column j a level up, bit for bit */
-	up = level > 0 && axis < 2 && !(i & 1) ?
-	    &r->coord[level - 1][axis][(i >> 1) % NCOORD] : NULL;
-	if (up != NULL && up->i == i >> 1) {
-		memcpy(k->text, up->text, sizeof(k->text));
-		k->len = up->len;
-	} else
-		k->len = fmtreal(k->text, v) - k->text;
-	k->ilen = fmtint(k->itext, (long long)i) - k->itext;
-	return k;
-}
-
-static inline const struct coordtext *
-coordtext(struct qtreader *r, int level, int axis, uint64_t i, double v)
-{
-	const struct coordtext *k = &r->coord[level][axis][i % NCOORD];
-
-	return k->i == i ? k : coordmiss(r, level, axis, i, v);
-}
-
 /* Reads a cell's x, y or size, which must be v; returns whether it is. */
 static int
 coordfield(struct qtreader *r, const char *text, int level, int axis,
-    uint64_t i, double v, double *out)
+    uint64_t i, double *out)
 {
-	const struct coordtext *k = coordtext(r, level, axis, i, v);
+	const struct coordtext *k = celltext(&r->text, level, axis, i);
 
 	if (strcmp(text, k->text) == 0) {
-		*out = v;
+		*out = k->v;
 		return 1;
 	}
 	*out = realfield(r, text, axis == 0 ? "x" : axis == 1 ? "y" : "size");
-	return *out == v;
+	return *out == k->v;
 }
 
 enum { FOLLOWS, INLEAF, PRECEDES };
@@ -353,12 +307,12 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 		qt_fail(r, "cell %s is at column %llu row %llu, not %s %s",
 		    c->path, (unsigned long long)ix, (unsigned long long)iy,
 		    r->field[3], r->field[4]);
-	size = r->cellsize[level];
+	size = r->text.size[level];
 	x = r->u.x0 + (double)ix * size;
 	y = r->u.y0 + (double)iy * size;
-	if (!coordfield(r, r->field[5], level, 0, ix, x, &c->x) ||
-	    !coordfield(r, r->field[6], level, 1, iy, y, &c->y) ||
-	    !coordfield(r, r->field[7], level, 2, 0, size, &c->size)) {
+	if (!coordfield(r, r->field[5], level, 0, ix, &c->x) ||
+	    !coordfield(r, r->field[6], level, 1, iy, &c->y) ||
+	    !coordfield(r, r->field[7], level, 2, 0, &c->size)) {
 		char bx[32], by[32], bs[32];
 
 		fmtreal(bx, x);
@@ -512,7 +466,6 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 	const char *p = line + 5, *end = line + len, *path = p;
 	const struct coordtext *kx, *ky, *ks;
 	uint64_t ix, iy;
-	double size;
 	int level, common;
 
 	if (memcmp(line, "leaf ", 5) == 0)
@@ -525,10 +478,9 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 		return 0;
 	if ((level = fastpath(r, &p, end, &ix, &iy, &common)) < 0)
 		return 0;
-	size = r->cellsize[level];
-	kx = coordtext(r, level, 0, ix, r->u.x0 + (double)ix * size);
-	ky = coordtext(r, level, 1, iy, r->u.y0 + (double)iy * size);
-	ks = coordtext(r, level, 2, 0, size);
+	kx = celltext(&r->text, level, 0, ix);
+	ky = celltext(&r->text, level, 1, iy);
+	ks = celltext(&r->text, level, 2, 0);
 	if ((p = fastlevel(p, level)) == NULL ||
 	    (p = fasttext(p, end, kx->itext, kx->ilen, 0)) == NULL ||
 	    (p = fasttext(p, end, ky->itext, ky->ilen, 0)) == NULL ||
@@ -557,15 +509,13 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 	c->iy = iy;
 	c->x = kx->v;
 	c->y = ky->v;
-	c->size = size;
+	c->size = ks->v;
 	return 1;
 }
 
 static void
 universerec(struct qtreader *r, struct qtrec *rec)
 {
-	int i;
-
 	nfields(r, 4, 4);
 	if (r->haveuniverse)
 		qt_fail(r, "second universe record");
@@ -578,8 +528,7 @@ universerec(struct qtreader *r, struct qtrec *rec)
 		qt_fail(r, "universe size is not positive");
 	r->u = rec->u;
 	r->haveuniverse = 1;
-	for (i = 0; i <= QT_MAXLEVEL; i++)
-		r->cellsize[i] = ldexp(r->u.size, -i);
+	celltext_init(&r->text, &r->u);
 }
 
 static void

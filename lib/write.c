@@ -9,42 +9,28 @@
 #include <string.h>
 
 #include "qtree.h"
+#include "celltext.h"
 
 /*
- * Formatting reals is the costliest part of the output, and the same
- * coordinates come back again and again (neighbours share columns and
- * rows, children their parent's lower left), so their texts are kept in a
- * table indexed by a hash of the grid line.  A grid line has one key
- * whatever the level it is named at: column 2i at level L + 1 is column i
- * at level L, bit for bit, since X0 + 2i * (h/2) and X0 + i * h round the
- * same exact product.
+ * Cells take their texts from the cell text cache.  A mesh's vertices,
+ * written in the order they were numbered, come back to the same grid
+ * lines less regularly: their texts are kept in a table indexed by a hash
+ * of the level and the grid line.
  */
 #define NTEXT	4096
 
-struct coordtext {
+struct gridtext {
 	uint64_t	key;	/* UINT64_MAX when empty */
 	size_t		len;
 	char		text[32];
-};
-
-/* The text of each level's last few columns or rows, as integers. */
-#define NINDEX	8
-
-struct indextext {
-	uint64_t	i;	/* UINT64_MAX when empty */
-	size_t		len;
-	char		text[24];
 };
 
 static struct {
 	char		 buf[1 << 16];
 	size_t		 len;
 	unsigned long long written;	/* records, for the end record */
-	struct universe	 u;
-	struct coordtext coord[2][NTEXT];
-	struct indextext index[QT_MAXLEVEL + 1][2][NINDEX];
-	char		 size[QT_MAXLEVEL + 1][32];
-	size_t		 sizelen[QT_MAXLEVEL + 1];
+	struct celltext	 cell;
+	struct gridtext	 grid[2][NTEXT];
 } w;
 
 static void
@@ -108,16 +94,10 @@ qt_universe(const struct universe *u)
 	p = fmtreal(p, u->size);
 	*p++ = '\n';
 	recorded(p);
-	w.u = *u;
-	for (a = 0; a < 2; a++) {
+	celltext_init(&w.cell, u);
+	for (a = 0; a < 2; a++)
 		for (i = 0; i < NTEXT; i++)
-			w.coord[a][i].key = UINT64_MAX;
-		for (i = 0; i < (QT_MAXLEVEL + 1) * NINDEX; i++)
-			w.index[i / NINDEX][a][i % NINDEX].i = UINT64_MAX;
-	}
-	for (i = 0; i <= QT_MAXLEVEL; i++)
-		w.sizelen[i] = fmtreal(w.size[i], ldexp(u->size, -i)) -
-		    w.size[i];
+			w.grid[a][i].key = UINT64_MAX;
 }
 
 void
@@ -154,53 +134,20 @@ qt_ring(const struct ring *ring)
 	}
 }
 
-/* Writes the coordinate of grid line i at level on axis 0 (x) or 1 (y). */
-static char *
-putcoord(char *p, int axis, int level, uint64_t i)
-{
-	struct coordtext *c;
-	uint64_t key;
-
-	if (i == 0)
-		level = 0;
-	else
-		for (; !(i & 1); i >>= 1)
-			level--;
-	key = i << 6 | (uint64_t)level;
-	c = &w.coord[axis][(key * UINT64_C(0x9E3779B97F4A7C15)) >> 52];
-	if (c->key != key) {
-		c->key = key;
-		c->len = fmtreal(c->text, cellcoord(axis ? w.u.y0 : w.u.x0,
-		    w.u.size, level, i)) - c->text;
-	}
-	memcpy(p, c->text, sizeof(c->text));	/* fixed size: a few moves */
-	return p + c->len;
-}
-
-/* Writes column or row i of level as an integer. */
-static char *
-putindex(char *p, int axis, int level, uint64_t i)
-{
-	struct indextext *t = &w.index[level][axis][i % NINDEX];
-
-	if (t->i != i) {
-		t->i = i;
-		t->len = fmtint(t->text, (long long)i) - t->text;
-	}
-	memcpy(p, t->text, sizeof(t->text));
-	return p + t->len;
-}
-
 /* A cell, with element number id when it is not 0. */
 void
 qt_cell(const struct cell *c, unsigned long long id)
 {
 	char *p = room(c->level + 256);	/* 3 integers, 3 reals, a path */
+	const struct coordtext *kx, *ky, *ks;
 
 	if (c->text != NULL) {
 		memcpy(p, c->text, c->textlen);
 		p += c->textlen;
 	} else {
+		kx = celltext(&w.cell, c->level, 0, c->ix);
+		ky = celltext(&w.cell, c->level, 1, c->iy);
+		ks = celltext(&w.cell, c->level, 2, 0);
 		memcpy(p, c->class ? "leaf " : "node ", 5);
 		p += 5;
 		memcpy(p, c->path, c->level > 0 ? c->level : 1);
@@ -210,16 +157,21 @@ qt_cell(const struct cell *c, unsigned long long id)
 			*p++ = '0' + c->level / 10;
 		*p++ = '0' + c->level % 10;
 		*p++ = ' ';
-		p = putindex(p, 0, c->level, c->ix);
+		/* fixed sizes compile to a few moves; the excess is overwritten */
+		memcpy(p, kx->itext, sizeof(kx->itext));
+		p += kx->ilen;
 		*p++ = ' ';
-		p = putindex(p, 1, c->level, c->iy);
+		memcpy(p, ky->itext, sizeof(ky->itext));
+		p += ky->ilen;
 		*p++ = ' ';
-		p = putcoord(p, 0, c->level, c->ix);
+		memcpy(p, kx->text, sizeof(kx->text));
+		p += kx->len;
 		*p++ = ' ';
-		p = putcoord(p, 1, c->level, c->iy);
+		memcpy(p, ky->text, sizeof(ky->text));
+		p += ky->len;
 		*p++ = ' ';
-		memcpy(p, w.size[c->level], sizeof(w.size[c->level]));
-		p += w.sizelen[c->level];
+		memcpy(p, ks->text, sizeof(ks->text));
+		p += ks->len;
 		if (c->class) {
 			*p++ = ' ';
 			*p++ = c->class;
@@ -233,6 +185,23 @@ qt_cell(const struct cell *c, unsigned long long id)
 	recorded(p);
 }
 
+/* Writes the coordinate of grid line i at level on axis 0 (x) or 1 (y). */
+static char *
+putgrid(char *p, int axis, int level, uint64_t i)
+{
+	uint64_t key = i << 6 | (uint64_t)level;
+	struct gridtext *t;
+
+	t = &w.grid[axis][(key * UINT64_C(0x9E3779B97F4A7C15)) >> 52];
+	if (t->key != key) {
+		t->key = key;
+		t->len = fmtreal(t->text, cellcoord(axis ? w.cell.u.y0 :
+		    w.cell.u.x0, w.cell.u.size, level, i)) - t->text;
+	}
+	memcpy(p, t->text, sizeof(t->text));
+	return p + t->len;
+}
+
 /* Mesh vertex id at corner (ix, iy) of the grid at level. */
 void
 qt_gridvertex(unsigned long long id, int level, uint64_t ix, uint64_t iy)
@@ -242,9 +211,9 @@ qt_gridvertex(unsigned long long id, int level, uint64_t ix, uint64_t iy)
 	memcpy(p, "vertex ", 7);
 	p = fmtint(p + 7, (long long)id);
 	*p++ = ' ';
-	p = putcoord(p, 0, level, ix);
+	p = putgrid(p, 0, level, ix);
 	*p++ = ' ';
-	p = putcoord(p, 1, level, iy);
+	p = putgrid(p, 1, level, iy);
 	*p++ = '\n';
 	recorded(p);
 }

@@ -60,7 +60,6 @@ static struct buf leaves[NCLASS];
 static unsigned long long nleaves[NCLASS];
 static double finest = -1;	/* side of the smallest thing drawn, pixels */
 static int deepestleaf = -1;	/* the level of the smallest leaf drawn */
-static double cellside[QT_MAXLEVEL + 1];
 
 /* Ring styles, which the legend repeats. */
 static const char ringstyle[] = "stroke=\"#000000\" stroke-width=\"1.5\"";
@@ -276,9 +275,9 @@ leaf(const struct cell *c)
 	if (!drawn[k])
 		return;
 	x0 = pixelx(c->x);
-	x1 = pixelx(u.x0 + (double)(c->ix + 1) * cellside[c->level]);
+	x1 = pixelx(u.x0 + (double)(c->ix + 1) * c->size);
 	y0 = pixely(c->y);
-	y1 = pixely(u.y0 + (double)(c->iy + 1) * cellside[c->level]);
+	y1 = pixely(u.y0 + (double)(c->iy + 1) * c->size);
 	if (nleaves[k] > 0 && nleaves[k] % CHUNK == 0)
 		putstr(b, "\"/>\n<path d=\"");
 	/* five numbers, each copied as a whole text, five letters, a space */
@@ -622,7 +621,7 @@ writesvg(void)
 	int rows = legendrows();
 
 	if (deepestleaf >= 0)
-		seefeature(cellside[deepestleaf] * scale);
+		seefeature(ldexp(u.size, -deepestleaf) * scale);
 	f = finest >= 0 ? finest : width - 2 * margin;
 
 	svghead(width + (long long)ROW * rows + (rows > 0 ? margin : 0));
@@ -671,7 +670,7 @@ main(int argc, char *argv[])
 	struct qtrec rec;
 	enum qtkind kind;
 	const char *name;
-	int ch, i, verbose = 0;
+	int ch, verbose = 0;
 
 	setprogname_(argv[0]);
 	classes("FEP");
@@ -714,8 +713,6 @@ main(int argc, char *argv[])
 		case QT_UNIVERSE:
 			u = rec.u;
 			scale = (width - 2 * margin) / u.size;
-			for (i = 0; i <= QT_MAXLEVEL; i++)
-				cellside[i] = ldexp(u.size, -i);
 			break;
 		case QT_RING:
 			ring(&rec.ring);

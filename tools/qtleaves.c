@@ -43,15 +43,14 @@ usage(void)
 static int
 zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
 {
-	uint64_t dx = ax ^ bx, dy = ay ^ by;
+	struct cell a, b;
 
-	/*
-	 * The coordinate whose highest differing bit is higher decides; y
-	 * wins a tie, its bit being the higher one in a path digit.
-	 */
-	if (dy < dx && dy < (dx ^ dy))
-		return ax < bx;
-	return ay < by;
+	a.level = b.level = GRID;
+	a.ix = ax;
+	a.iy = ay;
+	b.ix = bx;
+	b.iy = by;
+	return cellcmp(&a, &b) < 0;
 }
 
 /*

@@ -1,0 +1,36 @@
+/*
+ * celltext.h: inside the library only (read.c, write.c).  The texts of
+ * cells' columns and rows, and of their x, y and size, as the writers
+ * print them, kept per level and axis for the last few columns: in
+ * preorder, neighbours share columns and rows, and children their
+ * parent's, so few are ever formatted twice.  The reader compares fields
+ * with them, the writer copies them.
+ */
+#define NCOORD	8	/* columns kept per level and axis */
+
+struct coordtext {
+	uint64_t	 i;		/* UINT64_MAX when empty */
+	double		 v;		/* x0 + i * h, or h for the size */
+	size_t		 len, ilen;
+	char		 text[32];	/* of v, copied whole */
+	char		 itext[24];	/* of i, copied whole */
+};
+
+struct celltext {
+	struct universe	 u;
+	double		 size[QT_MAXLEVEL + 1];
+	struct coordtext coord[QT_MAXLEVEL + 1][3][NCOORD];
+};
+
+void	 celltext_init(struct celltext *, const struct universe *);
+const struct coordtext *celltext_miss(struct celltext *, int, int,
+	    uint64_t);
+
+/* Column (axis 0), row (1) or, with i = 0, the size (2) at level. */
+static inline const struct coordtext *
+celltext(struct celltext *t, int level, int axis, uint64_t i)
+{
+	const struct coordtext *k = &t->coord[level][axis][i % NCOORD];
+
+	return k->i == i ? k : celltext_miss(t, level, axis, i);
+}
