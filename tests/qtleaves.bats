@@ -242,9 +242,9 @@ amoeba() {
 	[ -s page ]
 	diff -u page - <<< "$output"
 	# and by hand: the three full quadrants of the L, the south-east one
-	# (1 1 0 1 0) removed, numbered 1 2 3; each element's corners run
-	# counter-clockwise from its lower left, a corner numbered when an
-	# element first reaches it
+	# (path 1, x 1..2, y 0..1) removed, numbered 1 2 3; each element's
+	# corners run counter-clockwise from its lower left, a corner numbered
+	# when an element first reaches it
 	cat > hand <<-EOF
 	leaf 0 1 0 0 0 0 1 F 1
 	leaf 2 1 0 1 0 1 1 F 2
