@@ -228,8 +228,8 @@ mesh() {
 	qt2svg -nN a.qt > one.svg
 	qt2svg -nN a.qt > two.svg
 	qt2svg -nN < a.qt > three.svg
-	run -0 cmp one.svg two.svg
-	run -0 cmp one.svg three.svg
+	diff -u one.svg two.svg
+	diff -u one.svg three.svg
 }
 
 @test "mesh elements and vertices are drawn from the mesh records" {

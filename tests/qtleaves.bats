@@ -123,7 +123,7 @@ amoeba() {
 		amoeba $l
 		qtleaves -n amoeba$l.qt > m.qt
 		# corners as integers on the grid of the deepest kept leaf
-		want=$(awk '$1 == "leaf" && $9 != "E" {
+		awk '$1 == "leaf" && $9 != "E" {
 			n++; L[n] = $3; X[n] = $4; Y[n] = $5
 			if ($3 > d) d = $3
 		}
@@ -135,11 +135,11 @@ amoeba() {
 				c[x + k " " y + k]; c[x " " y + k]
 			}
 			for (p in c) m++
-			print m, n
-		}' amoeba$l.qt)
-		got=$(awk '$1 == "vertex" { v++ } $1 == "elem" { e++ }
-		    END { print v, e }' m.qt)
-		[ "$got" = "$want" ]
+			print "vertices", m; print "elements", n
+		}' amoeba$l.qt > want
+		awk '$1 == "vertex" { v++ } $1 == "elem" { e++ }
+		    END { print "vertices", v + 0; print "elements", e + 0 }' m.qt > got
+		diff -u want got
 		# and no two vertices lie at the same point
 		run -0 bash -c 'awk '\''$1 == "vertex" { print $3, $4 }'\'' m.qt |
 		    sort | uniq -d'

@@ -152,7 +152,7 @@ uniform() {
 	diff -u want got
 	# sorting the cell records by PATH reproduces their order
 	grep -E '^(node|leaf)' a.qt > cells
-	LC_ALL=C sort -s -k2,2 cells | cmp - cells
+	LC_ALL=C sort -s -k2,2 cells | diff -u cells -
 	# every node has four children: cells = 1 + 4 nodes
 	[ "$(wc -l < cells)" -eq $((1 + 4 * $(grep -c '^node' cells))) ]
 }
