@@ -130,16 +130,20 @@ mesh() {
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 > a.qt
 	run -0 diff -u <(leafcounts a.qt) <(qt2svg a.qt | squares)
 	# and the report's figures, as qtsplit's tests know them
-	run -0 squares <(qt2svg a.qt)
-	[ "$output" = "$(printf 'F 291\nE 320\nP 344')" ]
+	printf 'F 291\nE 320\nP 344\n' > want
+	qt2svg a.qt | squares > got
+	diff -u want got
 }
 
 @test "-c draws only the classes asked for" {
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 > a.qt
-	run -0 squares <(qt2svg -c F a.qt)
-	[ "$output" = "$(printf 'F 291\nE 0\nP 0')" ]
-	run -0 squares <(qt2svg -c PE a.qt)
-	[ "$output" = "$(printf 'F 0\nE 320\nP 344')" ]
+	# the report's figures: 291 F, 320 E, 344 P
+	printf 'F 291\nE 0\nP 0\n' > want
+	qt2svg -c F a.qt | squares > got
+	diff -u want got
+	printf 'F 0\nE 320\nP 344\n' > want
+	qt2svg -c PE a.qt | squares > got
+	diff -u want got
 	run -1 grep -c 'id="leaves-F"' <(qt2svg -c PE a.qt)
 }
 
@@ -159,12 +163,21 @@ mesh() {
 	printf '0 2\n4 2\n4 4\n0 4\n' > upper.xy
 	polyread -u 0,0,4 -l 1 upper.xy | qtsplit > upper.qt
 	qt2svg -w 100 upper.qt > upper.svg
-	run -0 group leaves-F upper.svg
-	[ "$output" = '<path d="M10 10h40v40h-40zM50 10h40v40h-40z"/>' ]
-	run -0 group leaves-E upper.svg
-	[ "$output" = '<path d="M10 50h40v40h-40zM50 50h40v40h-40z"/>' ]
-	run -0 group outer-rings upper.svg
-	[ "$output" = '<path d="M10 50 90 50 90 10 10 10 10 50"/>' ]
+	# the upper quadrants F at px 10 and 50, py 10; the lower ones E at
+	# py 50; the ring from (0, 2), py 10 + 20 * (4 - 2) = 50, back to it
+	cat > want <<-'EOF'
+	leaves-F
+	<path d="M10 10h40v40h-40zM50 10h40v40h-40z"/>
+	leaves-E
+	<path d="M10 50h40v40h-40zM50 50h40v40h-40z"/>
+	outer-rings
+	<path d="M10 50 90 50 90 10 10 10 10 50"/>
+	EOF
+	for g in leaves-F leaves-E outer-rings; do
+		echo $g
+		group $g upper.svg
+	done > got
+	diff -u want got
 	run -0 grep -c '^<svg .* width="100" height="[0-9]*" viewBox="0 0 100 ' upper.svg
 }
 
@@ -215,8 +228,8 @@ mesh() {
 	qt2svg -nN a.qt > one.svg
 	qt2svg -nN a.qt > two.svg
 	qt2svg -nN < a.qt > three.svg
-	run -0 cmp one.svg two.svg
-	run -0 cmp one.svg three.svg
+	diff -u one.svg two.svg
+	diff -u one.svg three.svg
 }
 
 @test "mesh elements and vertices are drawn from the mesh records" {
@@ -225,38 +238,61 @@ mesh() {
 	# 90 pixels per unit: vertex 5 (1, 1) is pixel 100 100
 	run -0 group elements mesh.svg
 	[ "$output" = '<path d="M10 190 100 190 100 100 10 100zM100 190 190 190 190 100 100 100zM10 100 100 100 100 10 10 10zM100 100 190 100 190 10 100 10z"/>' ]
-	group vertices mesh.svg > dots
-	[ "$(grep -o 'M[0-9. ]*h0' dots | wc -l)" -eq 9 ]
-	run -0 grep -c 'M100 100h0' mesh.svg
+	# the nine vertices as dots, each where px = 10 + 90 x and
+	# py = 10 + 90 (2 - y) put it, in the order of their records
+	awk '$1 == "vertex" { printf "M%d %dh0", 10 + 90 * $3, 10 + 90 * (2 - $4) }
+	    END { print "" }' mesh.qt | sed 's/.*/<path d="&"\/>/' > want
+	group vertices mesh.svg > got
+	diff -u want got
 }
 
 @test "-n numbers elements at their centres, -N vertices beside them" {
 	mesh
 	qt2svg -w 200 -nN mesh.qt > mesh.svg
-	# once each, from the elem records, not again from the leaves
-	run -0 group element-numbers mesh.svg
-	[ "${#lines[@]}" -eq 4 ]
-	# element 1 spans pixels 10 to 100 across and 100 to 190 down
-	[[ "${lines[0]}" == '<text x="55" y="'* ]]
-	[[ "${lines[0]}" == *'>1</text>' ]]
-	[ "$(echo "${lines[0]}" | sed 's/.* y="\([0-9.]*\)".*/\1/')" \
-	    \> 145 ]
-	run -0 group vertex-numbers mesh.svg
-	[ "${#lines[@]}" -eq 9 ]
-	[[ "${lines[4]}" == *'>5</text>' ]]
+	# once each, from the elem records, not again from the leaves: each
+	# number at its element's centre across, its baseline at most a font
+	# size (12) below the centre; element 1 spans pixels 10 to 100 across
+	# and 100 to 190 down, centre 55 145
+	cat > want <<-'EOF'
+	1 x 55 baseline below the centre
+	2 x 145 baseline below the centre
+	3 x 55 baseline below the centre
+	4 x 145 baseline below the centre
+	EOF
+	group element-numbers mesh.svg | awk -F '"' '
+	    { cy[1] = cy[2] = 145; cy[3] = cy[4] = 55
+	      id = $0; sub(/<\/text>$/, "", id); sub(/.*>/, "", id)
+	      y = $4 + 0
+	      print id, "x", $2, "baseline",
+		  (y > cy[id] && y <= cy[id] + 12 ? "below" : "not below"),
+		  "the centre" }' > got
+	diff -u want got
+	# the vertex numbers 1 to 9 in record order, each above and to the
+	# right of its vertex, px = 10 + 90 x, py = 10 + 90 (2 - y)
+	seq 9 | sed 's/$/ above right/' > want
+	group vertex-numbers mesh.svg | awk -F '"' '
+	    NR == FNR { if ($0 ~ /^vertex/) { split($0, f, " ")
+		px[f[2]] = 10 + 90 * f[3]; py[f[2]] = 10 + 90 * (2 - f[4]) }
+		next }
+	    { id = $0; sub(/<\/text>$/, "", id); sub(/.*>/, "", id)
+	      print id, ($4 + 0 < py[id] ? "above" : "not above"),
+		  ($2 + 0 > px[id] ? "right" : "not right") }' mesh.qt - > got
+	diff -u want got
 }
 
 @test "-n takes the leaves' numbers when there are no elem records" {
 	mesh
 	grep -v '^vertex\|^elem' mesh.qt | sed 's/^end 19/end 6/' > leaves.qt
 	qt2svg -n leaves.qt > l.svg
-	group element-numbers l.svg > numbers
-	run -0 sed 's/.*>\([0-9]*\)<.*/\1/' numbers
-	[ "$output" = "$(printf '1\n2\n3\n4')" ]
-	# -c F keeps the numbers of F leaves only
-	run -0 bash -c 'qt2svg -n -c F leaves.qt | grep -c "</text>$"'
-	[ "$output" -ge 3 ]
-	run -1 grep '>4</text>' <(qt2svg -n -c F leaves.qt)
+	group element-numbers l.svg | sed 's/.*>\([0-9]*\)<.*/\1/' > got
+	seq 4 > want
+	diff -u want got
+	# -c F keeps the numbers of F leaves only: 1 to 3, not the E leaf's 4
+	qt2svg -n -c F leaves.qt > f.svg
+	group element-numbers f.svg | sed 's/.*>\([0-9]*\)<.*/\1/' > got
+	seq 3 > want
+	diff -u want got
+	run -1 grep '>4</text>' f.svg
 }
 
 @test "-n and -N with nothing to number say so and draw the rest" {
@@ -270,12 +306,18 @@ mesh() {
 @test "qtleaves' mesh of the amoeba draws every element and vertex" {
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 | qtleaves -n > m.qt
 	qt2svg -nN m.qt > m.svg
+	# counted from the records, and again from the picture
 	nelem=$(grep -c '^elem ' m.qt)
 	nvert=$(grep -c '^vertex ' m.qt)
-	[ "$(group elements m.svg | grep -o M | wc -l)" -eq "$nelem" ]
-	[ "$(group vertices m.svg | grep -o M | wc -l)" -eq "$nvert" ]
-	[ "$(group element-numbers m.svg | wc -l)" -eq "$nelem" ]
-	[ "$(group vertex-numbers m.svg | wc -l)" -eq "$nvert" ]
+	printf '%s\n' "elements $nelem" "vertices $nvert" \
+	    "element-numbers $nelem" "vertex-numbers $nvert" > want
+	{
+		echo "elements $(group elements m.svg | grep -o M | wc -l)"
+		echo "vertices $(group vertices m.svg | grep -o M | wc -l)"
+		echo "element-numbers $(group element-numbers m.svg | wc -l)"
+		echo "vertex-numbers $(group vertex-numbers m.svg | wc -l)"
+	} > got
+	diff -u want got
 }
 
 @test "a bad mesh record is reported with its line and exits 1" {
@@ -324,10 +366,15 @@ mesh() {
 
 @test "the man page's example counts the leaves drawn" {
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 > amoeba6.qt
-	run -0 bash -c 'qt2svg amoeba6.qt | awk '\''/^<g id="leaves-/ { c = substr($2, 12, 1) }
+	qt2svg amoeba6.qt | awk '/^<g id="leaves-/ { c = substr($2, 12, 1) }
 	    /^<path/ && c != "" { n[c] += gsub(/M/, "") }
-	    /^<\/g>/ { c = "" } END { for (k in n) print k, n[k] }'\'' | sort'
-	[ "$output" = "$(printf 'E 320\nF 291\nP 344')" ]
+	    /^<\/g>/ { c = "" } END { for (k in n) print k, n[k] }' | sort > got
+	# the report's figures, which the page prints too
+	printf 'E 320\nF 291\nP 344\n' > want
+	diff -u want got
+	sed -n '/^\$ qt2svg amoeba6.qt | awk/,/^\.Ed/p' "$TOP/man/qt2svg.1" |
+	    sed '1,3d;$d' > page
+	diff -u page got
 }
 
 @test "a full disk is an error, not a picture" {

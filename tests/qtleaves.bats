@@ -60,23 +60,21 @@ amoeba() {
 @test "-c keeps the classes asked for, in any order of letters" {
 	amoeba 6
 	# the counts are the exact reference's: 291 F, 320 E, 344 P
-	run -0 bash -c 'qtleaves -c F amoeba6.qt | leafcounts'
-	[ "$output" = "F 291
-E 0
-P 0" ]
-	run -0 bash -c 'qtleaves -c E amoeba6.qt | leafcounts'
-	[ "$output" = "F 0
-E 320
-P 0" ]
-	run -0 bash -c 'qtleaves amoeba6.qt | leafcounts'
-	[ "$output" = "F 291
-E 0
-P 344" ]
+	printf 'F 291\nE 0\nP 0\n' > want
+	qtleaves -c F amoeba6.qt | leafcounts > got
+	diff -u want got
+	printf 'F 0\nE 320\nP 0\n' > want
+	qtleaves -c E amoeba6.qt | leafcounts > got
+	diff -u want got
+	# without -c: F and P
+	printf 'F 291\nE 0\nP 344\n' > want
+	qtleaves amoeba6.qt | leafcounts > got
+	diff -u want got
 	run -0 bash -c 'qtleaves -c PEF amoeba6.qt | awk '\''$1 == "leaf" { n = $10 } END { print n }'\'
 	[ "$output" = 955 ]
 	qtleaves -c FP amoeba6.qt > a
 	qtleaves -c PF amoeba6.qt > b
-	run -0 cmp a b
+	diff -u a b
 }
 
 @test "-c refuses letters other than F, E and P, and an empty list" {
@@ -97,9 +95,12 @@ P 344" ]
 	    $1 == "leaf" && ++n == 5 { print "note among cells" }
 	    $1 == "end" { $2 += 2 } { print }' amoeba4.qt > in.qt
 	qtleaves in.qt > out.qt
-	run -0 grep '^note' out.qt
-	[ "$output" = "note before cells
-note among cells" ]
+	cat > want <<-EOF
+	note before cells
+	note among cells
+	EOF
+	grep '^note' out.qt > got
+	diff -u want got
 	run -1 grep -c '^node' out.qt
 	[ "$output" = 0 ]
 	run -0 bash -c 'grep -E "^(universe|level|ring|v) " in.qt > want &&
@@ -122,7 +123,7 @@ note among cells" ]
 		amoeba $l
 		qtleaves -n amoeba$l.qt > m.qt
 		# corners as integers on the grid of the deepest kept leaf
-		want=$(awk '$1 == "leaf" && $9 != "E" {
+		awk '$1 == "leaf" && $9 != "E" {
 			n++; L[n] = $3; X[n] = $4; Y[n] = $5
 			if ($3 > d) d = $3
 		}
@@ -134,11 +135,11 @@ note among cells" ]
 				c[x + k " " y + k]; c[x " " y + k]
 			}
 			for (p in c) m++
-			print m, n
-		}' amoeba$l.qt)
-		got=$(awk '$1 == "vertex" { v++ } $1 == "elem" { e++ }
-		    END { print v, e }' m.qt)
-		[ "$got" = "$want" ]
+			print "vertices", m; print "elements", n
+		}' amoeba$l.qt > want
+		awk '$1 == "vertex" { v++ } $1 == "elem" { e++ }
+		    END { print "vertices", v + 0; print "elements", e + 0 }' m.qt > got
+		diff -u want got
 		# and no two vertices lie at the same point
 		run -0 bash -c 'awk '\''$1 == "vertex" { print $3, $4 }'\'' m.qt |
 		    sort | uniq -d'
@@ -236,13 +237,31 @@ note among cells" ]
 @test "qtleaves(1): the examples print what the page says" {
 	run -0 bash -c 'polyread "$SAMPLES/invl.brep" | qtsplit | qtleaves -n |
 	    grep -E "^(leaf|vertex|elem)"'
-	expected=$(sed -n '/^\$ polyread samples\/invl.brep/,/^\.Ed/p' \
-	    "$TOP/man/qtleaves.1" | sed '1,2d;$d')
-	[ -n "$expected" ]
-	[ "$output" = "$expected" ]
-	# checked by hand: the three full quadrants of the L, 1 0 1 1 removed
-	[ "${lines[2]}" = "leaf 3 1 1 1 1 1 1 F 3" ]
-	[ "${lines[13]}" = "elem 3 quad 3 7 8 5" ]
+	sed -n '/^\$ polyread samples\/invl.brep/,/^\.Ed/p' \
+	    "$TOP/man/qtleaves.1" | sed '1,2d;$d' > page
+	[ -s page ]
+	diff -u page - <<< "$output"
+	# and by hand: the three full quadrants of the L, the south-east one
+	# (path 1, x 1..2, y 0..1) removed, numbered 1 2 3; each element's
+	# corners run counter-clockwise from its lower left, a corner numbered
+	# when an element first reaches it
+	cat > hand <<-EOF
+	leaf 0 1 0 0 0 0 1 F 1
+	leaf 2 1 0 1 0 1 1 F 2
+	leaf 3 1 1 1 1 1 1 F 3
+	vertex 1 0 0
+	vertex 2 1 0
+	vertex 3 1 1
+	vertex 4 0 1
+	vertex 5 1 2
+	vertex 6 0 2
+	vertex 7 2 1
+	vertex 8 2 2
+	elem 1 quad 1 2 3 4
+	elem 2 quad 4 3 5 6
+	elem 3 quad 3 7 8 5
+	EOF
+	diff -u hand - <<< "$output"
 	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 |
 	    qtleaves -c F | awk '\''$1 == "leaf" { a += $8 * $8 } END { print a }'\'
 	grep -q "^$output\$" "$TOP/man/qtleaves.1"

@@ -3,92 +3,134 @@
 
 load test_helper
 
+# The cell records of the uniform tree of level $2 over the universe 0 0 $1,
+# in preorder, written from qtree(5)'s rules alone: PATH digit 2*(y bit) +
+# (x bit), X = IX * h, Y = IY * h, h = $1 / 2^LEVEL.  Each leaf's class is
+# the awk expression $3 of the leaf's IX and IY, a rule found by hand.
+uniform() {
+	awk -v size="$1" -v deepest="$2" '
+	function cls(ix, iy) { return '"$3"' }
+	function visit(p, lev, ix, iy,    h, d) {
+		h = size / 2 ^ lev
+		if (lev == deepest) {
+			print "leaf", p == "" ? "." : p, lev, ix, iy, ix * h, iy * h, h, cls(ix, iy)
+			return
+		}
+		print "node", p == "" ? "." : p, lev, ix, iy, ix * h, iy * h, h
+		for (d = 0; d < 4; d++)
+			visit(p d, lev + 1, 2 * ix + d % 2, 2 * iy + int(d / 2))
+	}
+	BEGIN { visit("", 0, 0, 0) }'
+}
+
+@test "the uniform trees that tests here expect are valid by tests/treecheck.awk" {
+	for t in "4 1" "4 2" "2 3"; do
+		set -- $t
+		{ echo "universe 0 0 $1"; uniform $1 $2 '"F"'; } > u.qt
+		echo "cells $(( (4 ** ($2 + 1) - 1) / 3 ))" > want
+		awk -f "$TOP/tests/treecheck.awk" u.qt > got
+		diff -u want got
+	done
+}
+
 @test "amoeba at level 6: 291 F, 320 E, 344 P as the exact reference gives" {
-	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | leafcounts'
-	[ "$output" = "F 291
-E 320
-P 344" ]
+	cat > want <<-EOF
+	F 291
+	E 320
+	P 344
+	EOF
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | leafcounts > got
+	diff -u want got
 }
 
 @test "amoeba at level 10: 5307 F, 5686 E, 5553 P as the exact reference gives" {
-	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 10 | leafcounts'
-	[ "$output" = "F 5307
-E 5686
-P 5553" ]
+	cat > want <<-EOF
+	F 5307
+	E 5686
+	P 5553
+	EOF
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 10 | leafcounts > got
+	diff -u want got
 }
 
 @test "the report's case 5 stops at level 1 with 3 F and 1 E whatever the level" {
+	# by hand: the L in the universe 0 0 2 fills the unit quadrants but the
+	# south-east one, so the root splits once and its children are uniform
+	cat > want <<-EOF
+	node . 0 0 0 0 0 2
+	leaf 0 1 0 0 0 0 1 F
+	leaf 1 1 1 0 1 0 1 E
+	leaf 2 1 0 1 0 1 1 F
+	leaf 3 1 1 1 1 1 1 F
+	EOF
 	for l in 1 2 8 30; do
 		polyread "$SAMPLES/invl.brep" | qtsplit -l $l > t.qt
-		run -0 grep -E '^(node|leaf)' t.qt
-		[ "$output" = "node . 0 0 0 0 0 2
-leaf 0 1 0 0 0 0 1 F
-leaf 1 1 1 0 1 0 1 E
-leaf 2 1 0 1 0 1 1 F
-leaf 3 1 1 1 1 1 1 F" ]
+		grep -E '^(node|leaf)' t.qt > got
+		diff -u want got
 	done
 }
 
 @test "edges along cell lines do not make cells partial" {
 	# the square 1..3 in the universe 0..4: at level 2 its sides are cell
-	# lines, so the four middle cells are full and the rest empty
+	# lines, so the four middle cells (IX and IY 1 or 2, paths 03 12 21 30)
+	# are full and the other 12 empty
 	polyread -u 0,0,4 "$FIXTURES/square.xy" | qtsplit -l 5 > s.qt
-	run -0 leafcounts s.qt
-	[ "$output" = "F 4
-E 12
-P 0" ]
-	run -0 awk '$1 == "leaf" && $9 == "F" { print $2 }' s.qt
-	[ "$output" = "03
-12
-21
-30" ]
+	uniform 4 2 '(ix == 1 || ix == 2) && (iy == 1 || iy == 2) ? "F" : "E"' > want
+	grep -E '^(node|leaf)' s.qt > got
+	diff -u want got
 	# at level 1 each quadrant holds a corner of the square: all partial
 	polyread -u 0,0,4 "$FIXTURES/square.xy" | qtsplit -l 1 > s1.qt
-	run -0 leafcounts s1.qt
-	[ "$output" = "F 0
-E 0
-P 4" ]
+	uniform 4 1 '"P"' > want
+	grep -E '^(node|leaf)' s1.qt > got
+	diff -u want got
 }
 
 @test "edges through cell corners: the diamond at level 2, counted by hand" {
 	# |x-2| + |y-2| <= 2 in 0..4: the 8 cells on the diagonals are crossed,
-	# the 4 middle cells are full, the 4 corner cells are touched at one
-	# corner only and are empty
+	# the 4 middle cells (IX and IY 1 or 2) are full, the 4 corner cells
+	# (IX and IY 0 or 3, paths 00 11 22 33) are touched at one corner only
+	# and are empty: 4 F, 4 E, 8 P
 	polyread -u 0,0,4 -l 2 "$FIXTURES/diamond.xy" | qtsplit > d.qt
-	run -0 leafcounts d.qt
-	[ "$output" = "F 4
-E 4
-P 8" ]
-	run -0 awk '$1 == "leaf" && $9 == "E" { print $2 }' d.qt
-	[ "$output" = "00
-11
-22
-33" ]
+	mid='(ix == 1 || ix == 2) && (iy == 1 || iy == 2)'
+	corner='(ix == 0 || ix == 3) && (iy == 0 || iy == 3)'
+	uniform 4 2 "$mid ? \"F\" : $corner ? \"E\" : \"P\"" > want
+	grep -E '^(node|leaf)' d.qt > got
+	diff -u want got
+	cat > want <<-EOF
+	F 4
+	E 4
+	P 8
+	EOF
+	leafcounts d.qt > got
+	diff -u want got
 }
 
 @test "a hole exactly on cell lines is an empty cell, not a partial one" {
 	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 3\n3 3\n3 1\n' > h.xy
+	# the hole is the 4 middle cells of level 2, as the square above: the
+	# same tree with the classes swapped
 	polyread h.xy | qtsplit -l 2 > h.qt
-	run -0 leafcounts h.qt
-	[ "$output" = "F 12
-E 4
-P 0" ]
+	uniform 4 2 '(ix == 1 || ix == 2) && (iy == 1 || iy == 2) ? "E" : "F"' > want
+	grep -E '^(node|leaf)' h.qt > got
+	diff -u want got
 }
 
 @test "rings touching at a cell corner decompose correctly" {
 	polyread "$FIXTURES/touch.wkt" | qtsplit -l 6 > t.qt
-	run -0 awk -f "$TOP/tests/cellcheck.awk" t.qt
-	[ "${lines[0]}" = "checked $(awk '$1 == "leaf" && $9 != "P"' t.qt | wc -l | tr -d ' ')" ]
-	[ "${#lines[@]}" -eq 1 ]
+	# no violation, and every F and E leaf checked
+	awk '$1 == "leaf" && $9 != "P" { n++ } END { print "checked " n + 0 }' t.qt > want
+	awk -f "$TOP/tests/cellcheck.awk" t.qt > got
+	diff -u want got
 }
 
 @test "F leaves lie inside and E leaves outside, by an independent test" {
 	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt "$SAMPLES"/*.poly; do
 		polyread "$f" | qtsplit -l 8 > c.qt
-		run -0 awk -f "$TOP/tests/cellcheck.awk" c.qt
-		[[ "${lines[0]}" == "checked "* ]] || { echo "$f: $output"; return 1; }
-		[ "${#lines[@]}" -eq 1 ]
-		[ "${lines[0]}" != "checked 0" ]
+		# no violation, and every F and E leaf checked, of which some
+		awk '$1 == "leaf" && $9 != "P" { n++ } END { print "checked " n + 0 }' c.qt > want
+		! grep -qx 'checked 0' want
+		awk -f "$TOP/tests/cellcheck.awk" c.qt > got
+		diff -u --label "$f want" --label got want got
 	done
 }
 
@@ -105,12 +147,12 @@ P 0" ]
 
 @test "cells are in preorder with PATH, LEVEL, IX, IY, X, Y and SIZE consistent" {
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 9 > a.qt
-	run -0 awk -f "$TOP/tests/treecheck.awk" a.qt
-	[ "${#lines[@]}" -eq 1 ]
-	[ "${lines[0]}" = "cells $(grep -cE '^(node|leaf)' a.qt)" ]
+	echo "cells $(grep -cE '^(node|leaf)' a.qt)" > want
+	awk -f "$TOP/tests/treecheck.awk" a.qt > got
+	diff -u want got
 	# sorting the cell records by PATH reproduces their order
 	grep -E '^(node|leaf)' a.qt > cells
-	LC_ALL=C sort -s -k2,2 cells | cmp - cells
+	LC_ALL=C sort -s -k2,2 cells | diff -u cells -
 	# every node has four children: cells = 1 + 4 nodes
 	[ "$(wc -l < cells)" -eq $((1 + 4 * $(grep -c '^node' cells))) ]
 }
@@ -146,12 +188,13 @@ P 0" ]
 }
 
 @test "-m splits every cell down to the minimum level" {
+	# the report's case 5 (see above) split to level 3 in the universe
+	# 0 0 2: the 16 cells of the south-east quadrant (IX >= 4, IY < 4)
+	# are E, the other 48 F
 	polyread "$SAMPLES/invl.brep" | qtsplit -m 3 -l 5 > m.qt
-	run -0 leafcounts m.qt
-	[ "$output" = "F 48
-E 16
-P 0" ]
-	[ "$(awk '$1 == "leaf" && $3 != 3' m.qt | wc -l)" -eq 0 ]
+	uniform 2 3 'ix >= 4 && iy < 4 ? "E" : "F"' > want
+	grep -E '^(node|leaf)' m.qt > got
+	diff -u want got
 }
 
 @test "levels 0 to 30 work, and a level above the maximum is refused" {
@@ -162,10 +205,13 @@ P 0" ]
 	# (2,1) and touches cell (1,1) at its corner only
 	printf '1 1\n3 1\n1 3\n' > tri.xy
 	polyread -u 0,0,1073741824 tri.xy | qtsplit -l 30 > deep.qt
-	run -0 awk '$1 == "leaf" && $3 == 30 && $9 != "E" { print $4, $5, $9 }' deep.qt
-	[ "$output" = "1 1 F
-2 1 P
-1 2 P" ]
+	cat > want <<-EOF
+	1 1 F
+	2 1 P
+	1 2 P
+	EOF
+	awk '$1 == "leaf" && $3 == 30 && $9 != "E" { print $4, $5, $9 }' deep.qt > got
+	diff -u want got
 	run -2 --separate-stderr qtsplit -l 51 deep.qt
 	[ "$stderr" = "qtsplit: -l: level must be an integer from 0 to 50: 51" ]
 }
