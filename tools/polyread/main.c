@@ -183,8 +183,9 @@ main(int argc, char *argv[])
 	for (i = 0; i == 0 || i < argc; i++)
 		readinput(&in, argc > 0 ? argv[i] : "-", forced);
 	check(&in);
+	/* -u wins over a universe the input declares, as polyread(1) says */
 	if (haveoptu) {
-		u = in.haveuniverse ? in.universe : optu;
+		u = optu;
 		checkuniverse(&in, &u, "given with -u");
 	} else if (in.haveuniverse) {
 		u = in.universe;
