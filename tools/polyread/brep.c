@@ -11,7 +11,7 @@
 
 /* brep takes whatever no other format claims (see main.c). */
 int
-isbrep(struct src *s)
+isbrep(const struct src *s)
 {
 	(void)s;
 	return 1;

@@ -26,7 +26,7 @@ struct polyfile {
 
 /* Triangle's header: four integers, the second the dimension, 2. */
 int
-ispoly(struct src *s)
+ispoly(const struct src *s)
 {
 	const char *f[4];
 	size_t len[4];

@@ -39,7 +39,7 @@ struct input {
 	int		 level;		/* declared by an input, or -1 */
 };
 
-/* Where two rings touch: the sweep finds them, the nesting checks them. */
+/* Where two rings touch: the sweep finds them, connectivity reads them. */
 struct touch {
 	long		ring[2];	/* the lower number first */
 	struct point	p;
@@ -60,7 +60,7 @@ struct src {
  */
 struct format {
 	const char	*name;
-	int		(*detect)(struct src *);
+	int		(*detect)(const struct src *);
 	void		(*parse)(struct src *, struct input *);
 };
 
@@ -80,13 +80,13 @@ void	 addvertex(struct input *, struct inring *, double, double, long);
 void	 addseed(struct input *, const char *, long, double, double);
 
 /* One file a format: its detection and its reader. */
-int	 isbrep(struct src *);
+int	 isbrep(const struct src *);
 void	 parsebrep(struct src *, struct input *);
-int	 isxy(struct src *);
+int	 isxy(const struct src *);
 void	 parsexy(struct src *, struct input *);
-int	 iswkt(struct src *);
+int	 iswkt(const struct src *);
 void	 parsewkt(struct src *, struct input *);
-int	 ispoly(struct src *);
+int	 ispoly(const struct src *);
 void	 parsepoly(struct src *, struct input *);
 
 /* valid.c: each ring alone, how rings nest, the universe, orientation */

@@ -12,7 +12,7 @@
 
 /* The first word starts with a letter. */
 int
-iswkt(struct src *s)
+iswkt(const struct src *s)
 {
 	return isalpha((unsigned char)*s->p);
 }

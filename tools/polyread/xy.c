@@ -11,7 +11,7 @@
 
 /* The first line of data holds two fields. */
 int
-isxy(struct src *s)
+isxy(const struct src *s)
 {
 	return linefields(s->p, NULL, NULL, 0) == 2;
 }
