@@ -198,6 +198,7 @@ main(int argc, char *argv[])
 	writestream(&in, &u, level);
 	if (verbose)
 		progress(1, "%zu rings written", in.nrings);
+	freeinput(&in);
 	closeout();
 	return 0;
 }

@@ -78,6 +78,7 @@ void	 expectmore(struct src *, long long, long long, const char *);
 struct inring *newring(struct input *, const char *, long, int, long);
 void	 addvertex(struct input *, struct inring *, double, double, long);
 void	 addseed(struct input *, const char *, long, double, double);
+void	 freeinput(struct input *);
 
 /* One file a format: its detection and its reader. */
 int	 isbrep(const struct src *);

@@ -210,3 +210,16 @@ addseed(struct input *in, const char *file, long line, double x, double y)
 	in->seeds[in->nseeds].p.y = y;
 	in->nseeds++;
 }
+
+void
+freeinput(struct input *in)
+{
+	size_t i;
+
+	for (i = 0; i < in->nrings; i++) {
+		free(in->rings[i].v);
+		free(in->rings[i].line);
+	}
+	free(in->rings);
+	free(in->seeds);
+}
