@@ -13,9 +13,6 @@ BIN = polyread qtsplit qtleaves qtstats qt2svg
 MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
 	man/qt2svg.1
 MAN5 = man/qtree.5
-POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
-	tools/polyread/brep.o tools/polyread/xy.o tools/polyread/wkt.o \
-	tools/polyread/poly.o tools/polyread/valid.o tools/polyread/sweep.o
 LIBOBJ = lib/util.o lib/geom.o lib/stream.o lib/fmtreal.o lib/area.o
 
 all: $(BIN)
@@ -30,6 +27,10 @@ lib/libqtree.a: $(LIBOBJ)
 .c.o:
 	$(CC) $(QTCFLAGS) $(CFLAGS) -c -o $@ $<
 
+# polyread has a directory of its own, a file a job.
+POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
+	tools/polyread/brep.o tools/polyread/xy.o tools/polyread/wkt.o \
+	tools/polyread/poly.o tools/polyread/valid.o tools/polyread/sweep.o
 $(BIN): lib/libqtree.a
 polyread: $(POLYREADOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(POLYREADOBJ) lib/libqtree.a $(LDLIBS)
