@@ -264,7 +264,7 @@ contains(const struct inring *r, struct strips *st, struct point p,
 	return inside;
 }
 
-/* The rings cmpring sorts the numbers of: qsort passes it no context. */
+/* What cmpring's ring numbers index: qsort passes it no context. */
 static const struct inring *sortrings;
 
 static int
