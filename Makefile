@@ -29,9 +29,13 @@ lib/libqtree.a: $(LIBOBJ)
 .c.o:
 	$(CC) $(QTCFLAGS) $(CFLAGS) -c -o $@ $<
 
+# polyread has a directory of its own, a file a job.
+POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
+	tools/polyread/brep.o tools/polyread/xy.o tools/polyread/wkt.o \
+	tools/polyread/poly.o tools/polyread/valid.o tools/polyread/sweep.o
 $(BIN): lib/libqtree.a
-polyread: tools/polyread.o
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/polyread.o lib/libqtree.a $(LDLIBS)
+polyread: $(POLYREADOBJ)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(POLYREADOBJ) lib/libqtree.a $(LDLIBS)
 qtsplit: tools/qtsplit.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o lib/libqtree.a $(LDLIBS)
 qtleaves: tools/qtleaves.o
@@ -40,7 +44,8 @@ qtstats: tools/qtstats.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o lib/libqtree.a $(LDLIBS)
 qt2svg: tools/qt2svg.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qt2svg.o lib/libqtree.a $(LDLIBS)
-tools/polyread.o tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
+$(POLYREADOBJ): lib/qtree.h tools/polyread/polyread.h
+tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
 tools/qt2svg.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
@@ -101,5 +106,6 @@ uninstall:
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
 	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats
+	rm -f $(POLYREADOBJ)
 
 .PHONY: all test demo regress bench sanitize fuzz install uninstall clean

@@ -167,6 +167,16 @@ ring 3 outer 4" ]
 	[[ "$stderr" == "polyread: -l: level must be an integer from 0 to "* ]]
 }
 
+@test "-u wins over the universe a brep carries, and the rings stay as they were" {
+	run -0 polyread -u 0,0,100 "$SAMPLES/amoeba.brep"
+	[ "${lines[1]}" = "universe 0 0 100" ]
+	polyread "$SAMPLES/amoeba.brep" | awk '$1 == "ring" || $1 == "v"' > own.qt
+	polyread -u 0,0,100 "$SAMPLES/amoeba.brep" |
+	    awk '$1 == "ring" || $1 == "v"' > given.qt
+	[ -s own.qt ]
+	diff -u own.qt given.qt
+}
+
 @test "a polygon outside the universe is an error" {
 	run -1 --separate-stderr polyread -u 0,0,2 "$FIXTURES/square.xy"
 	[ "$stderr" = "polyread: $FIXTURES/square.xy:3: vertex lies outside the universe given with -u" ]

@@ -15,14 +15,17 @@ if ! command -v afl-clang-fast > /dev/null 2>&1; then
 	exit 1
 fi
 
+# build PROGRAM SOURCE...: the program's own sources with the library's.
 build() {
+	prog=$1
+	shift
 	AFL_QUIET=1 AFL_USE_ASAN=1 AFL_USE_UBSAN=1 afl-clang-fast -O1 -g \
 	    -std=c99 -D_POSIX_C_SOURCE=200809L -ffp-contract=off -Ilib \
-	    -o "tests/fuzz/$1" "tools/$1.c" lib/*.c -lm
+	    -o "tests/fuzz/$prog" "$@" lib/*.c -lm
 }
-build polyread
-build qtsplit
-build qtstats
+build polyread tools/polyread/*.c
+build qtsplit tools/qtsplit.c
+build qtstats tools/qtstats.c
 
 # Containers have no CPU governor to check, may refuse CPU binding, and
 # may pipe core dumps elsewhere: none of that matters to a short run.

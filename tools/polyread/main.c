@@ -1,0 +1,204 @@
+/*
+ * polyread: read polygons in brep, xy, wkt or Triangle poly form, check
+ * that they make a valid region, and write them as a qtree(5) stream of
+ * rings: outer rings counter-clockwise, holes clockwise.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "qtree.h"
+#include "polyread.h"
+
+int verbose;
+
+/*
+ * Detection tries the rows from the last up and takes the first that
+ * claims the input: brep, which claims any, comes first, and a new format
+ * goes last.  The -f message lists them in this order.
+ */
+static const struct format formats[] = {
+	{ "brep",	isbrep,	parsebrep },
+	{ "xy",		isxy,	parsexy },
+	{ "wkt",	iswkt,	parsewkt },
+	{ "poly",	ispoly,	parsepoly },
+};
+#define NFORMATS	(sizeof(formats) / sizeof(formats[0]))
+
+static void
+usage(void)
+{
+	fprintf(stderr, "usage: polyread [-v] [-f format] [-l level] "
+	    "[-u x0,y0,size] [file ...]\n");
+	exit(2);
+}
+
+static const struct format *
+formatnamed(const char *name)
+{
+	char list[128];
+	size_t i, len = 0;
+
+	for (i = 0; i < NFORMATS; i++)
+		if (strcmp(name, formats[i].name) == 0)
+			return &formats[i];
+	list[0] = '\0';
+	for (i = 0; i < NFORMATS && len < sizeof(list); i++)
+		len += snprintf(list + len, sizeof(list) - len, "%s%s",
+		    i > 0 ? ", " : "", formats[i].name);
+	die(2, "-f: unknown format %s (%s)", name, list);
+	return NULL;
+}
+
+/* Leaves the scanner at the input's first data, which the detectors read. */
+static const struct format *
+detect(struct src *s)
+{
+	const struct format *f = &formats[NFORMATS - 1];
+
+	if (!skipspace(s))
+		errat(s->name, lastline(s), "no polygon in the input");
+	while (!f->detect(s))
+		f--;
+	return f;
+}
+
+static void
+parseuniverse(const char *arg, struct universe *u)
+{
+	const char *p = arg, *end;
+	double v[3];
+	int i;
+
+	for (i = 0; i < 3; i++) {
+		if (parsereal(p, &end, &v[i]) < 0 || !coordok(v[i]))
+			die(2, "-u: expected x0,y0,size: %s", arg);
+		p = end;
+		if (i < 2 && *p++ != ',')
+			die(2, "-u: expected x0,y0,size: %s", arg);
+	}
+	if (*p != '\0' || v[2] <= 0)
+		die(2, "-u: expected x0,y0,size with size > 0: %s", arg);
+	u->x0 = v[0];
+	u->y0 = v[1];
+	u->size = v[2];
+}
+
+static void
+readinput(struct input *in, const char *path, const struct format *forced)
+{
+	const struct format *f;
+	struct src s;
+
+	readall(&s, path);
+	f = detect(&s);
+	if (forced != NULL)
+		f = forced;
+	s.p = s.buf;
+	s.line = 1;
+	f->parse(&s, in);
+	/* rings keep pointers to the name, not to the buffer */
+	free(s.buf);
+}
+
+static void
+check(struct input *in)
+{
+	struct touch *touches;
+	size_t ntouches;
+
+	if (verbose)
+		progress(1, "%llu vertices in %zu rings read", in->nvertices,
+		    in->nrings);
+	checkrings(in);
+	touches = checkedges(in, &ntouches);
+	if (verbose)
+		progress(1, "no two edges cross or overlap");
+	checknesting(in, touches, ntouches);
+	free(touches);
+	if (verbose)
+		progress(1, "nesting and connectivity checked");
+}
+
+static void
+writestream(const struct input *in, const struct universe *u, int level)
+{
+	size_t i;
+
+	qt_header();
+	qt_universe(u);
+	if (level >= 0)
+		qt_level(level);
+	for (i = 0; i < in->nrings; i++) {
+		const struct inring *r = &in->rings[i];
+		struct ring out;
+
+		out.id = i + 1;
+		out.hole = r->depth % 2;
+		out.n = r->n;
+		out.v = r->v;
+		qt_ring(&out);
+	}
+	qt_end();
+}
+
+int
+main(int argc, char *argv[])
+{
+	const struct format *forced = NULL;
+	struct input in;
+	struct universe optu, u;
+	const char *end;
+	long long level = -1;
+	int ch, i, haveoptu = 0;
+
+	setprogname_(argv[0]);
+	while ((ch = getopt(argc, argv, "f:l:u:v")) != -1)
+		switch (ch) {
+		case 'f':
+			forced = formatnamed(optarg);
+			break;
+		case 'l':
+			if (parselong(optarg, &end, &level) < 0 || *end != '\0' ||
+			    level < 0 || level > QT_MAXLEVEL)
+				die(2, "-l: level must be an integer from 0 to "
+				    "%d: %s", QT_MAXLEVEL, optarg);
+			break;
+		case 'u':
+			parseuniverse(optarg, &optu);
+			haveoptu = 1;
+			break;
+		case 'v':
+			verbose = 1;
+			break;
+		default:
+			usage();
+		}
+	argc -= optind;
+	argv += optind;
+
+	memset(&in, 0, sizeof(in));
+	in.level = -1;
+	for (i = 0; i == 0 || i < argc; i++)
+		readinput(&in, argc > 0 ? argv[i] : "-", forced);
+	check(&in);
+	/* -u wins over a universe the input declares, as polyread(1) says */
+	if (haveoptu) {
+		u = optu;
+		checkuniverse(&in, &u, "given with -u");
+	} else if (in.haveuniverse) {
+		u = in.universe;
+		checkuniverse(&in, &u, "given in the input");
+	} else
+		defaultuniverse(&in, &u);
+	if (level < 0)
+		level = in.level;
+	orientrings(&in);
+	writestream(&in, &u, level);
+	if (verbose)
+		progress(1, "%zu rings written", in.nrings);
+	freeinput(&in);
+	closeout();
+	return 0;
+}

@@ -1,0 +1,103 @@
+/*
+ * polyread.h: what polyread's readers, checks and main share.
+ */
+
+enum role { UNKNOWN = -1, OUTER = 0, HOLE = 1 };
+
+struct inring {
+	const char	*file;
+	long		*line;		/* input line of each vertex */
+	struct point	*v;
+	size_t		 n, cap;
+	long		 firstline;
+	int		 role;		/* as declared, or UNKNOWN */
+	long		 poly;		/* declared polygon, for wkt */
+	/* filled by the checks */
+	double		 xmin, ymin, xmax, ymax;
+	long		 parent;	/* innermost ring around it, or -1 */
+	long		 depth;
+};
+
+/* A Triangle hole point: it must lie outside the region. */
+struct seed {
+	struct point	 p;
+	const char	*file;
+	long		 line;
+};
+
+/* Everything the inputs gave, all files together. */
+struct input {
+	struct inring	*rings;
+	size_t		 nrings, ringcap;
+	unsigned long long nvertices;
+	long		 npolys;	/* polygons declared (brep, wkt) */
+	struct seed	*seeds;
+	size_t		 nseeds;
+	struct universe	 universe;	/* declared by an input (brep) */
+	int		 haveuniverse;
+	const char	*universefile;
+	int		 level;		/* declared by an input, or -1 */
+};
+
+/* Where two rings touch: the sweep finds them, connectivity reads them. */
+struct touch {
+	long		ring[2];	/* the lower number first */
+	struct point	p;
+};
+
+/* One input file, read whole, and the scanner's place in it. */
+struct src {
+	const char	*name;
+	char		*buf;
+	size_t		 len;
+	char		*p;
+	long		 line;
+};
+
+/*
+ * A format: detect says whether an input, its scanner at the first data,
+ * looks like one; parse adds the input's rings to in.
+ */
+struct format {
+	const char	*name;
+	int		(*detect)(const struct src *);
+	void		(*parse)(struct src *, struct input *);
+};
+
+extern int verbose;		/* -v: report progress */
+
+/* src.c: reading a file, the token scanner, the rings being built */
+void	 readall(struct src *, const char *);
+int	 linefields(const char *, const char **, size_t *, int);
+int	 skipspace(struct src *);
+long	 lastline(const struct src *);
+void	 badtoken(struct src *, const char *);
+double	 number(struct src *, const char *);
+long long integer(struct src *, const char *, long long, long long);
+void	 expectmore(struct src *, long long, long long, const char *);
+struct inring *newring(struct input *, const char *, long, int, long);
+void	 addvertex(struct input *, struct inring *, double, double, long);
+void	 addseed(struct input *, const char *, long, double, double);
+void	 freeinput(struct input *);
+
+/* One file a format: its detection and its reader. */
+int	 isbrep(const struct src *);
+void	 parsebrep(struct src *, struct input *);
+int	 isxy(const struct src *);
+void	 parsexy(struct src *, struct input *);
+int	 iswkt(const struct src *);
+void	 parsewkt(struct src *, struct input *);
+int	 ispoly(const struct src *);
+void	 parsepoly(struct src *, struct input *);
+
+/* valid.c: each ring alone, how rings nest, the universe, orientation */
+long	 ringno(const struct input *, const struct inring *);
+void	 checkrings(struct input *);
+void	 checknesting(struct input *, const struct touch *, size_t);
+void	 defaultuniverse(const struct input *, struct universe *);
+void	 checkuniverse(const struct input *, const struct universe *,
+	    const char *);
+void	 orientrings(struct input *);
+
+/* sweep.c: no two edges cross or overlap; where rings touch */
+struct touch *checkedges(const struct input *, size_t *);

@@ -1,0 +1,512 @@
+/*
+ * valid.c: the checks that do not need the sweep: each ring alone, how the
+ * rings nest, whether the polygons' interiors are connected, the hole
+ * points and the universe; and the rings' orientation for output.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "qtree.h"
+#include "polyread.h"
+
+/* Drops consecutive repeats and the closing repeat of the first vertex. */
+static void
+tidy(struct inring *r)
+{
+	size_t i, k = 0;
+
+	for (i = 0; i < r->n; i++) {
+		if (k > 0 && r->v[i].x == r->v[k - 1].x &&
+		    r->v[i].y == r->v[k - 1].y)
+			continue;
+		r->v[k] = r->v[i];
+		r->line[k++] = r->line[i];
+	}
+	while (k > 1 && r->v[k - 1].x == r->v[0].x && r->v[k - 1].y == r->v[0].y)
+		k--;
+	r->n = k;
+}
+
+/* Which rings they are, as people count them: from 1 in input order. */
+long
+ringno(const struct input *in, const struct inring *r)
+{
+	return (long)(r - in->rings) + 1;
+}
+
+static void
+checkring(const struct input *in, struct inring *r)
+{
+	size_t i, far = 0;
+	int third = 0;
+
+	for (i = 1; i < r->n; i++)
+		if (r->v[i].x != r->v[0].x || r->v[i].y != r->v[0].y) {
+			far = i;
+			break;
+		}
+	for (i = 1; far > 0 && i < r->n && !third; i++)
+		third = (r->v[i].x != r->v[0].x || r->v[i].y != r->v[0].y) &&
+		    (r->v[i].x != r->v[far].x || r->v[i].y != r->v[far].y);
+	if (!third)
+		errat(r->file, r->firstline, "ring %ld has fewer than 3 "
+		    "distinct vertices", ringno(in, r));
+	for (i = 1; i < r->n; i++)
+		if (orient2d(r->v[0].x, r->v[0].y, r->v[far].x, r->v[far].y,
+		    r->v[i].x, r->v[i].y) != 0)
+			break;
+	if (i == r->n)
+		errat(r->file, r->firstline, "ring %ld has zero area",
+		    ringno(in, r));
+	r->xmin = r->xmax = r->v[0].x;
+	r->ymin = r->ymax = r->v[0].y;
+	for (i = 1; i < r->n; i++) {
+		r->xmin = fmin(r->xmin, r->v[i].x);
+		r->xmax = fmax(r->xmax, r->v[i].x);
+		r->ymin = fmin(r->ymin, r->v[i].y);
+		r->ymax = fmax(r->ymax, r->v[i].y);
+	}
+}
+
+/* Each ring alone, tidied, with its bounding box. */
+void
+checkrings(struct input *in)
+{
+	size_t i;
+
+	for (i = 0; i < in->nrings; i++) {
+		tidy(&in->rings[i]);
+		checkring(in, &in->rings[i]);
+	}
+}
+
+/* Union-find: the representative of x's set. */
+static long
+find(long *uf, long x)
+{
+	while (uf[x] != x)
+		x = uf[x] = uf[uf[x]];
+	return x;
+}
+
+/* The polygon a ring bounds: its own, or for a hole its shell's. */
+static long
+polyof(const struct inring *rings, long ring)
+{
+	return rings[ring].depth % 2 == 0 ? ring : rings[ring].parent;
+}
+
+struct link {
+	long		poly, ring;
+	struct point	p;
+};
+
+static int
+cmplink(const void *a, const void *b)
+{
+	const struct link *s = a, *t = b;
+
+	if (s->poly != t->poly)
+		return s->poly < t->poly ? -1 : 1;
+	if (s->p.x != t->p.x)
+		return s->p.x < t->p.x ? -1 : 1;
+	if (s->p.y != t->p.y)
+		return s->p.y < t->p.y ? -1 : 1;
+	return (s->ring > t->ring) - (s->ring < t->ring);
+}
+
+/*
+ * A polygon's interior is connected unless its rings and the points where
+ * they touch form a cycle (the OGC rule GEOS checks).  Each link joins a
+ * ring to a touching point of its own polygon; a link between two nodes
+ * already connected closes a cycle.
+ */
+static void
+connectivity(const struct input *in, const struct touch *touches,
+    size_t ntouches)
+{
+	struct link *link = xreallocarray(NULL, 2 * ntouches + 1,
+	    sizeof(*link));
+	size_t i, n = 0, nrings = in->nrings, node = nrings;
+	long *uf;
+
+	for (i = 0; i < ntouches; i++) {
+		long pa = polyof(in->rings, touches[i].ring[0]);
+		int m;
+
+		if (pa != polyof(in->rings, touches[i].ring[1]))
+			continue;
+		for (m = 0; m < 2; m++) {
+			link[n].poly = pa;
+			link[n].ring = touches[i].ring[m];
+			link[n++].p = touches[i].p;
+		}
+	}
+	qsort(link, n, sizeof(*link), cmplink);
+	uf = xreallocarray(NULL, nrings + n + 1, sizeof(*uf));
+	for (i = 0; i < nrings + n + 1; i++)
+		uf[i] = i;
+	for (i = 0; i < n; i++) {
+		long a, b;
+
+		if (i > 0 && cmplink(&link[i - 1], &link[i]) == 0)
+			continue;
+		if (i > 0 && (link[i - 1].poly != link[i].poly ||
+		    link[i - 1].p.x != link[i].p.x ||
+		    link[i - 1].p.y != link[i].p.y))
+			node++;
+		a = find(uf, link[i].ring);
+		b = find(uf, node);
+		if (a == b) {
+			const struct inring *r = &in->rings[link[i].ring];
+			char px[32], py[32];
+
+			fmtreal(px, link[i].p.x);
+			fmtreal(py, link[i].p.y);
+			errat(r->file, r->firstline, "interior is disconnected: "
+			    "ring %ld touches the rings around it at %s %s "
+			    "and elsewhere, closing a loop", ringno(in, r), px,
+			    py);
+		}
+		uf[a] = b;
+	}
+	free(uf);
+	free(link);
+}
+
+/*
+ * Containment queries against a large ring look only at the edges in the
+ * horizontal strip of the query point: a ray at height y can only cross
+ * edges whose y range holds y, and those are all filed under y's strip.
+ */
+struct strips {
+	double	 ymin, height;
+	size_t	 k;
+	size_t	*start;		/* edges of strip j: edge[start[j]..start[j+1]) */
+	size_t	*edge;
+};
+
+static size_t
+stripof(const struct strips *st, double y)
+{
+	double f = (y - st->ymin) / st->height;
+
+	if (!(f > 0))
+		return 0;
+	return f >= (double)(st->k - 1) ? st->k - 1 : (size_t)f;
+}
+
+static void
+buildstrips(const struct inring *r, struct strips *st)
+{
+	size_t i, j, *fill;
+	double sum = 0, lim;
+
+	/*
+	 * An edge is filed under every strip it spans: with long edges (a
+	 * zigzag) fewer strips keep that to about 5 entries per edge.
+	 */
+	for (i = 0; i < r->n; i++)
+		sum += fabs(r->v[(i + 1) % r->n].y - r->v[i].y);
+	lim = 4.0 * r->n * (r->ymax - r->ymin) / sum;
+	st->k = r->n / 8;
+	if (lim < st->k)
+		st->k = lim < 1 ? 1 : (size_t)lim;
+	st->ymin = r->ymin;
+	st->height = (r->ymax - r->ymin) / st->k;
+	st->start = xreallocarray(NULL, st->k + 1, sizeof(*st->start));
+	fill = xreallocarray(NULL, st->k + 1, sizeof(*fill));
+	memset(st->start, 0, (st->k + 1) * sizeof(*st->start));
+	for (i = 0; i < r->n; i++) {
+		struct point a = r->v[i], b = r->v[(i + 1) % r->n];
+		size_t lo = stripof(st, fmin(a.y, b.y)), hi = stripof(st,
+		    fmax(a.y, b.y));
+
+		for (j = lo; j <= hi; j++)
+			st->start[j + 1]++;
+	}
+	for (j = 0; j < st->k; j++)
+		st->start[j + 1] += st->start[j];
+	memcpy(fill, st->start, (st->k + 1) * sizeof(*fill));
+	st->edge = xreallocarray(NULL, st->start[st->k] + 1,
+	    sizeof(*st->edge));
+	for (i = 0; i < r->n; i++) {
+		struct point a = r->v[i], b = r->v[(i + 1) % r->n];
+		size_t lo = stripof(st, fmin(a.y, b.y)), hi = stripof(st,
+		    fmax(a.y, b.y));
+
+		for (j = lo; j <= hi; j++)
+			st->edge[fill[j]++] = i;
+	}
+	free(fill);
+}
+
+static int
+contains(const struct inring *r, struct strips *st, struct point p,
+    struct point toward)
+{
+	size_t j, s;
+	int inside = 0;
+
+	if (r->n < 64)
+		return ring_contains(r->v, r->n, p, toward);
+	if (st->k == 0)
+		buildstrips(r, st);
+	s = stripof(st, p.y);
+	for (j = st->start[s]; j < st->start[s + 1]; j++) {
+		size_t i = st->edge[j];
+
+		inside ^= ray_crosses(r->v[i], r->v[(i + 1) % r->n], p,
+		    toward);
+	}
+	return inside;
+}
+
+/* What cmpring's ring numbers index: qsort passes it no context. */
+static const struct inring *sortrings;
+
+static int
+cmpring(const void *a, const void *b)
+{
+	const struct inring *r = &sortrings[*(const size_t *)a];
+	const struct inring *q = &sortrings[*(const size_t *)b];
+
+	return (r->xmin > q->xmin) - (r->xmin < q->xmin);
+}
+
+static int
+bboxinside(const struct inring *a, const struct inring *b)
+{
+	return b->xmin <= a->xmin && b->xmax >= a->xmax &&
+	    b->ymin <= a->ymin && b->ymax >= a->ymax;
+}
+
+/*
+ * Depth: how many rings contain it.  Parent: the deepest of those.  A sweep
+ * in x keeps the rings whose x range reaches the current one, so each ring
+ * is tested only against rings whose box could hold it.
+ */
+static void
+nesting(struct input *in)
+{
+	struct inring *rings = in->rings;
+	struct strips *strips;
+	size_t i, j, g, n = 0, cap = 0, nact = 0, *order, *active;
+	size_t nrings = in->nrings;
+	long (*pair)[2] = NULL;
+
+	order = xreallocarray(NULL, nrings + 1, sizeof(*order));
+	active = xreallocarray(NULL, nrings + 1, sizeof(*active));
+	strips = xreallocarray(NULL, nrings + 1, sizeof(*strips));
+	memset(strips, 0, (nrings + 1) * sizeof(*strips));
+	for (i = 0; i < nrings; i++) {
+		order[i] = i;
+		rings[i].depth = 0;
+		rings[i].parent = -1;
+	}
+	sortrings = rings;
+	qsort(order, nrings, sizeof(*order), cmpring);
+	for (i = 0; i < nrings; i = g) {
+		double x = rings[order[i]].xmin;
+		size_t keep = 0;
+
+		/* rings that start together may hold one another */
+		for (g = i; g < nrings && rings[order[g]].xmin == x; g++)
+			active[nact++] = order[g];
+		for (j = 0; j < nact; j++)
+			if (rings[active[j]].xmax >= x)
+				active[keep++] = active[j];
+		nact = keep;
+		for (; i < g; i++) {
+			struct inring *a = &rings[order[i]];
+
+			for (j = 0; j < nact; j++) {
+				size_t b = active[j];
+
+				if (b == order[i] || !bboxinside(a, &rings[b]) ||
+				    !contains(&rings[b], &strips[b], a->v[0],
+				    a->v[1]))
+					continue;
+				if (n == cap) {
+					cap = cap ? 2 * cap : 64;
+					pair = xreallocarray(pair, cap,
+					    sizeof(*pair));
+				}
+				pair[n][0] = order[i];
+				pair[n++][1] = b;
+				a->depth++;
+			}
+		}
+	}
+	for (i = 0; i < n; i++) {
+		struct inring *a = &rings[pair[i][0]];
+
+		if (a->parent < 0 ||
+		    rings[pair[i][1]].depth > rings[a->parent].depth)
+			a->parent = pair[i][1];
+	}
+	for (i = 0; i < nrings; i++)
+		if (strips[i].k > 0) {
+			free(strips[i].start);
+			free(strips[i].edge);
+		}
+	free(strips);
+	free(pair);
+	free(order);
+	free(active);
+}
+
+/* Declared roles (wkt, brep) must agree with the nesting. */
+static void
+checkroles(const struct input *in)
+{
+	size_t i;
+
+	for (i = 0; i < in->nrings; i++) {
+		const struct inring *r = &in->rings[i], *p;
+
+		if (r->role == UNKNOWN)
+			continue;
+		p = r->parent >= 0 ? &in->rings[r->parent] : NULL;
+		if (r->role == OUTER && p != NULL && p->role != HOLE)
+			errat(r->file, r->firstline, "polygon of ring %ld lies "
+			    "inside polygon of ring %ld", ringno(in, r),
+			    ringno(in, p));
+		if (r->role == HOLE && p != NULL && p->role == HOLE)
+			errat(r->file, r->firstline, "hole ring %ld lies inside "
+			    "hole ring %ld", ringno(in, r), ringno(in, p));
+		if (r->role == HOLE && (p == NULL || p->poly != r->poly))
+			errat(r->file, r->firstline, "hole ring %ld lies "
+			    "outside its shell", ringno(in, r));
+	}
+}
+
+static void
+checkseeds(const struct input *in)
+{
+	size_t i, j;
+
+	for (i = 0; i < in->nseeds; i++) {
+		const struct seed *sd = &in->seeds[i];
+		int inside = 0;
+
+		for (j = 0; j < in->nrings; j++)
+			inside ^= ring_contains(in->rings[j].v, in->rings[j].n,
+			    sd->p, sd->p);
+		if (inside)
+			errat(sd->file, sd->line, "hole point lies inside the "
+			    "region its rings bound");
+	}
+}
+
+/*
+ * After the sweep, whose touches it takes: the rings' depth and parent,
+ * the roles they were declared with, connected interiors, hole points.
+ */
+void
+checknesting(struct input *in, const struct touch *touches, size_t ntouches)
+{
+	nesting(in);
+	checkroles(in);
+	connectivity(in, touches, ntouches);
+	checkseeds(in);
+}
+
+/* The bounding box, squared up from its lower left corner. */
+void
+defaultuniverse(const struct input *in, struct universe *u)
+{
+	const struct inring *rings = in->rings;
+	double xmin, ymin, xmax, ymax;
+	size_t i;
+
+	if (in->nrings == 0) {
+		u->x0 = u->y0 = 0;
+		u->size = 1;
+		return;
+	}
+	xmin = rings[0].xmin, ymin = rings[0].ymin;
+	xmax = rings[0].xmax, ymax = rings[0].ymax;
+	for (i = 1; i < in->nrings; i++) {
+		xmin = fmin(xmin, rings[i].xmin);
+		ymin = fmin(ymin, rings[i].ymin);
+		xmax = fmax(xmax, rings[i].xmax);
+		ymax = fmax(ymax, rings[i].ymax);
+	}
+	u->x0 = xmin;
+	u->y0 = ymin;
+	u->size = fmax(xmax - xmin, ymax - ymin);
+	while (u->x0 + u->size < xmax || u->y0 + u->size < ymax)
+		u->size = nextafter(u->size, INFINITY);
+}
+
+/* how: where the universe came from, for the message. */
+void
+checkuniverse(const struct input *in, const struct universe *u,
+    const char *how)
+{
+	const struct inring *r;
+	size_t j;
+
+	for (r = in->rings; r < in->rings + in->nrings; r++)
+		for (j = 0; j < r->n; j++) {
+			struct point p = r->v[j];
+
+			if (p.x < u->x0 || p.y < u->y0 ||
+			    p.x > u->x0 + u->size || p.y > u->y0 + u->size)
+				errat(r->file, r->line[j], "vertex lies "
+				    "outside the universe %s", how);
+		}
+}
+
+/* Exact orientation of a simple ring: the turn at its lowest-left vertex. */
+static int
+ringsign(const struct inring *r)
+{
+	size_t i, m = 0;
+	struct point a, b, c;
+
+	for (i = 1; i < r->n; i++)
+		if (r->v[i].x < r->v[m].x ||
+		    (r->v[i].x == r->v[m].x && r->v[i].y < r->v[m].y))
+			m = i;
+	a = r->v[(m + r->n - 1) % r->n];
+	b = r->v[m];
+	c = r->v[(m + 1) % r->n];
+	return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
+}
+
+static void
+reverse(struct inring *r)
+{
+	size_t i, j;
+
+	for (i = 0, j = r->n - 1; i < j; i++, j--) {
+		struct point t = r->v[i];
+		long l = r->line[i];
+
+		r->v[i] = r->v[j];
+		r->v[j] = t;
+		r->line[i] = r->line[j];
+		r->line[j] = l;
+	}
+}
+
+/*
+ * As qtree(5) wants them: outer rings counter-clockwise, holes clockwise.
+ * Last, after every check, whose messages count vertices in input order.
+ */
+void
+orientrings(struct input *in)
+{
+	size_t i;
+
+	for (i = 0; i < in->nrings; i++) {
+		struct inring *r = &in->rings[i];
+
+		if ((ringsign(r) > 0) == r->depth % 2)
+			reverse(r);
+	}
+}
