@@ -19,7 +19,7 @@ LIBOBJ = lib/msg.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
 all: $(BIN)
 
 $(LIBOBJ): lib/qtree.h
-lib/cell.o lib/read.o lib/write.o: lib/celltext.h
+$(LIBOBJ): lib/internal.h
 lib/libqtree.a: $(LIBOBJ)
 	rm -f $@
 	ar rc $@ $(LIBOBJ)

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "qtree.h"
+#include "internal.h"
 
 void
 xs_init(struct xsum *s)
@@ -31,7 +32,7 @@ xs_free(struct xsum *s)
 	xs_init(s);
 }
 
-void
+static void
 xs_zero(struct xsum *s)
 {
 	s->n = 0;
@@ -102,7 +103,7 @@ xs_add(struct xsum *s, double b)
 }
 
 /* Adds a * b exactly. */
-void
+static void
 xs_addprod(struct xsum *s, double a, double b)
 {
 	double p, e;
@@ -198,14 +199,6 @@ mo_init(struct moments *m)
 	xs_init(&m->a2);
 	xs_init(&m->mx);
 	xs_init(&m->my);
-}
-
-void
-mo_free(struct moments *m)
-{
-	xs_free(&m->a2);
-	xs_free(&m->mx);
-	xs_free(&m->my);
 }
 
 void

@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "celltext.h"
+#include "internal.h"
 
 /* Cell corners as qtree(5) defines them: x0 + i * h in double arithmetic. */
 double

@@ -51,8 +51,6 @@ char	*fmtint(char *, long long);	/* 24 bytes */
 struct point {
 	double	x, y;
 };
-void	 two_sum(double, double, double *, double *);
-void	 two_product(double, double, double *, double *);
 int	 orient2d(double, double, double, double, double, double);
 int	 ray_crosses(struct point, struct point, struct point, struct point);
 int	 ring_contains(const struct point *, size_t, struct point,
@@ -133,7 +131,6 @@ enum {
 
 struct qtreader *qt_open(FILE *, const char *, int);
 enum qtkind qt_read(struct qtreader *, struct qtrec *);
-long	 qt_lineno(const struct qtreader *);
 void	 qt_fail(const struct qtreader *, const char *, ...);
 void	 qt_close(struct qtreader *);
 
@@ -169,15 +166,12 @@ struct moments {
 };
 void	 xs_init(struct xsum *);
 void	 xs_free(struct xsum *);
-void	 xs_zero(struct xsum *);
 void	 xs_add(struct xsum *, double);
-void	 xs_addprod(struct xsum *, double, double);
 void	 xs_addprod3(struct xsum *, double, double, double);
 void	 xs_addxs(struct xsum *, const struct xsum *, double);
 int	 xs_sign(const struct xsum *);
 double	 xs_round(const struct xsum *);
 void	 mo_init(struct moments *);
-void	 mo_free(struct moments *);
 void	 mo_zero(struct moments *);
 void	 mo_edge(struct moments *, struct point, struct point);
 void	 mo_addmo(struct moments *, const struct moments *, int);

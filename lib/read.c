@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "qtree.h"
-#include "celltext.h"
+#include "internal.h"
 
 enum { BEFORE_HEADER, IN_BODY, AFTER_END };
 
@@ -85,12 +85,6 @@ qt_close(struct qtreader *r)
 	free(r->ringtext.s);
 	free(r->type);
 	free(r);
-}
-
-long
-qt_lineno(const struct qtreader *r)
-{
-	return r->lineno;
 }
 
 void

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "celltext.h"
+#include "internal.h"
 
 /*
  * Cells take their texts from the cell text cache.  A mesh's vertices,

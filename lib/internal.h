@@ -1,5 +1,13 @@
 /*
- * celltext.h: inside the library only (read.c, write.c).  The texts of
+ * internal.h: what the library's files share and no program calls.
+ */
+
+/* geom.c: error-free transformations, for area.c's exact sums */
+void	 two_sum(double, double, double *, double *);
+void	 two_product(double, double, double *, double *);
+
+/*
+ * cell.c, for read.c and write.c: the texts of
  * cells' columns and rows, and of their x, y and size, as the writers
  * print them, kept per level and axis for the last few columns: in
  * preorder, neighbours share columns and rows, and children their
