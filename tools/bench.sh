@@ -1,10 +1,12 @@
 #!/bin/sh
 # bench.sh: time polyread and qtsplit on generated polygons, and qtleaves,
-# qtstats and qt2svg on the largest level-16 stream (with their instructions
-# a record by callgrind when valgrind is installed), print a table and the
+# qtstats and qt2svg on the largest level-16 stream, print a table and the
 # targets of issue 3 with their figures, and draw samples/bench.svg.
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
+#
+# Then tools/benchir.sh: every program's instructions a record, by
+# callgrind, when valgrind is installed.
 #
 # Polygons (tools/genpoly.awk, the same with any awk): star polygons of
 # N = 10^2 ... 10^6 vertices around a square hole, and Koch snowflakes
@@ -292,20 +294,10 @@ if [ -n "$big" ]; then
 	rm -f "$tmp/big.qt"
 fi
 
-# Instructions a record, a figure that the machine's noise does not move:
-# callgrind on the level-14 stream of the same star.
-if command -v valgrind >/dev/null 2>&1 && [ -f "$tmp/star-1000.qt" ]; then
-	./qtsplit -l 14 "$tmp/star-1000.qt" >"$tmp/mid.qt"
-	nrec=$(grep -cv -e '^qtree ' -e '^end ' -e '^#' "$tmp/mid.qt")
-	for tool in qtleaves qtstats qt2svg; do
-		[ -x "./$tool" ] || continue
-		ir=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null \
-		    "./$tool" "$tmp/mid.qt" 2>&1 >/dev/null |
-		    awk '/refs:/ { gsub(",", "", $NF); print $NF }')
-		[ -n "$ir" ] && echo "# $tool: $((ir / nrec)) instructions a" \
-		    "record (callgrind; star N=1000, level 14, $nrec records)"
-	done
-	rm -f "$tmp/mid.qt"
+# Instructions a record, a figure that the machine's noise does not move.
+if command -v valgrind >/dev/null 2>&1; then
+	echo
+	sh tools/benchir.sh .
 fi
 
 echo
