@@ -730,14 +730,15 @@ body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 	case QT_LEVEL:
 		levelrec(r, rec);
 		break;
-	case QT_RING:
-		if (isv ? !vrec(r) : (ringrec(r), 1)) {
-			unsplit(r);
-			append(&r->ringtext, line, len);
-			append(&r->ringtext, "\n", 1);
-			return 0;
-		}
-		break;
+	case QT_RING:	/* a ring or a v record: the ring comes at its last v */
+		if (!isv)
+			ringrec(r);
+		else if (vrec(r))
+			break;
+		unsplit(r);
+		append(&r->ringtext, line, len);
+		append(&r->ringtext, "\n", 1);
+		return 0;
 	case QT_NODE:
 	case QT_LEAF:
 		cellrec(r, rec);
