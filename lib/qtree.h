@@ -81,6 +81,19 @@ int	 pathprefix(const char *, int, const char *, int);
 int	 cellcmp(const struct cell *, const struct cell *);
 
 /*
+ * cellset.c: cells in memory by level, column and row, for neighbour
+ * search (qtbalance, qtmesh); 32 bytes a cell.  A class is 'F', 'E', 'P',
+ * or 0 for a node; cellset_get gives -1 for a cell not in the set.
+ */
+struct cellset *cellset_new(void);
+void	 cellset_free(struct cellset *);
+size_t	 cellset_count(const struct cellset *);
+void	 cellset_put(struct cellset *, int, uint64_t, uint64_t, char);
+int	 cellset_get(const struct cellset *, int, uint64_t, uint64_t);
+int	 cellset_above(const struct cellset *, int, uint64_t, uint64_t);
+int	 cellnext(int, uint64_t, uint64_t, int, int, uint64_t *, uint64_t *);
+
+/*
  * read.c: the qtree(5) reader.  It checks every record against qtree(5)
  * and reports any defect itself, as "prog: file:line: message", exit 1:
  * what qt_read returns is valid.  A ring comes whole, its vertices with
