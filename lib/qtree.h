@@ -79,6 +79,8 @@ double	 cellcoord(double, double, int, uint64_t);
 int	 pathcell(const char *, int, uint64_t *, uint64_t *);
 int	 pathprefix(const char *, int, const char *, int);
 int	 cellcmp(const struct cell *, const struct cell *);
+unsigned optclasses(const char *);	/* -c: F, E, P as bits 1, 2, 4 */
+#define CLASSBIT(c)	((c) == 'F' ? 1u : (c) == 'E' ? 2u : (c) == 'P' ? 4u : 0u)
 
 /*
  * cellset.c: cells in memory by level, column and row, for neighbour
@@ -143,7 +145,9 @@ enum {
 };
 
 struct qtreader *qt_open(FILE *, const char *, int);
+struct qtreader *qt_openpath(const char *, int);	/* "-": stdin */
 enum qtkind qt_read(struct qtreader *, struct qtrec *);
+const char *qt_name(const struct qtreader *);
 void	 qt_fail(const struct qtreader *, const char *, ...);
 void	 qt_close(struct qtreader *);
 

@@ -75,6 +75,16 @@ qt_open(FILE *fp, const char *name, int flags)
 	return r;
 }
 
+/* Opens an operand as a stream, "-" the standard input. */
+struct qtreader *
+qt_openpath(const char *path, int flags)
+{
+	const char *name;
+	FILE *fp = openin(path, &name);
+
+	return qt_open(fp, name, flags);
+}
+
 void
 qt_close(struct qtreader *r)
 {
@@ -85,6 +95,12 @@ qt_close(struct qtreader *r)
 	free(r->ringtext.s);
 	free(r->type);
 	free(r);
+}
+
+const char *
+qt_name(const struct qtreader *r)
+{
+	return r->name;
 }
 
 void

@@ -78,10 +78,13 @@ amoeba() {
 }
 
 @test "-c refuses letters other than F, E and P, and an empty list" {
-	run -2 --separate-stderr qtleaves -c FX /dev/null
-	[ "$stderr" = "qtleaves: -c: unknown class X (F, E or P)" ]
-	run -2 --separate-stderr qtleaves -c '' /dev/null
-	[ "$stderr" = "qtleaves: -c: no classes given (a string of F, E and P)" ]
+	# one rule, and one wording, for -c in every program that has it
+	for p in qtleaves qt2svg; do
+		run -2 --separate-stderr $p -c FX /dev/null
+		[ "$stderr" = "$p: -c: unknown class X (F, E or P)" ]
+		run -2 --separate-stderr $p -c '' /dev/null
+		[ "$stderr" = "$p: -c: no classes given (a word of F, E and P)" ]
+	done
 	run -2 --separate-stderr qtleaves -x
 	[ "${stderr##*$'\n'}" = "usage: qtleaves [-nv] [-c classes] [file]" ]
 	run -2 --separate-stderr qtleaves a b

@@ -658,22 +658,14 @@ writesvg(void)
 	outs("</svg>\n");
 }
 
+/* The classes to draw, from a set of CLASSBIT bits. */
 static void
-classes(const char *arg)
+setdrawn(unsigned set)
 {
-	const char *p;
 	int k;
 
-	if (*arg == '\0')
-		die(2, "-c: no class given (a word of F, E and P)");
-	for (p = arg; *p != '\0'; p++) {
-		for (k = 0; k < NCLASS; k++)
-			if (*p == classletter[k])
-				break;
-		if (k == NCLASS)
-			die(2, "-c: classes are F, E and P: %s", arg);
-		opt.drawn[k] = 1;
-	}
+	for (k = 0; k < NCLASS; k++)
+		opt.drawn[k] = (set & CLASSBIT(classletter[k])) != 0;
 }
 
 static int
@@ -693,19 +685,16 @@ int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	FILE *fp;
 	struct qtrec rec;
 	enum qtkind kind;
-	const char *name;
 	int ch, verbose = 0;
 
 	setprogname_(argv[0]);
-	classes("FEP");
+	setdrawn(optclasses("FEP"));
 	while ((ch = getopt(argc, argv, "c:m:nNvw:")) != -1)
 		switch (ch) {
 		case 'c':
-			memset(opt.drawn, 0, sizeof(opt.drawn));
-			classes(optarg);
+			setdrawn(optclasses(optarg));
 			break;
 		case 'm':
 			opt.margin = pixels(ch, optarg, 0);
@@ -732,8 +721,7 @@ main(int argc, char *argv[])
 	if (opt.width - 2 * opt.margin < 1)
 		die(2, "-m %d leaves no room in -w %d", opt.margin, opt.width);
 
-	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	r = qt_open(fp, name,
+	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    QT_NEEDUNIVERSE | (verbose ? QT_VERBOSE : 0));
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
@@ -757,13 +745,13 @@ main(int argc, char *argv[])
 			break;
 		}
 	}
-	qt_close(r);
 	if (opt.nflag && pic.mesh.nelems == 0 && pic.leaves.nlabels == 0)
-		warnat(name, 0, "-n: no element numbers in the stream "
+		warnat(qt_name(r), 0, "-n: no element numbers in the stream "
 		    "(qtleaves adds them)");
 	if (opt.Nflag && pic.mesh.nverts == 0)
-		warnat(name, 0, "-N: no vertex records in the stream "
+		warnat(qt_name(r), 0, "-N: no vertex records in the stream "
 		    "(qtleaves -n adds them)");
+	qt_close(r);
 	writesvg();
 	closeout();
 	return 0;

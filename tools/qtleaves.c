@@ -204,38 +204,21 @@ writemesh(void)
 	}
 }
 
-/* Sets keep[class] for the classes in s, and only for them. */
-static void
-setclasses(char keep[256], const char *s)
-{
-	if (*s == '\0')
-		die(2, "-c: no classes given (a string of F, E and P)");
-	memset(keep, 0, 256);
-	for (; *s != '\0'; s++) {
-		if (*s != 'F' && *s != 'E' && *s != 'P')
-			die(2, "-c: unknown class %c (F, E or P)", *s);
-		keep[(unsigned char)*s] = 1;
-	}
-}
-
 int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	FILE *fp;
 	struct qtrec rec;
 	enum qtkind kind;
-	const char *name;
 	unsigned long long id = 0;
-	char keep[256];
+	unsigned keep = CLASSBIT('F') | CLASSBIT('P');
 	int ch, kept, nflag = 0, verbose = 0;
 
 	setprogname_(argv[0]);
-	setclasses(keep, "FP");
 	while ((ch = getopt(argc, argv, "c:nv")) != -1)
 		switch (ch) {
 		case 'c':
-			setclasses(keep, optarg);
+			keep = optclasses(optarg);
 			break;
 		case 'n':
 			nflag = 1;
@@ -251,8 +234,7 @@ main(int argc, char *argv[])
 	if (argc > 1)
 		usage();
 
-	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	r = qt_open(fp, name,
+	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    verbose ? QT_VERBOSE : 0);
 	qt_header();
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
@@ -269,7 +251,7 @@ main(int argc, char *argv[])
 		case QT_NODE:
 			break;
 		case QT_LEAF:
-			kept = keep[(unsigned char)rec.c.class];
+			kept = (keep & CLASSBIT(rec.c.class)) != 0;
 			if (kept)
 				qt_cell(&rec.c, ++id);
 			if (nflag)

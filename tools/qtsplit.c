@@ -428,8 +428,7 @@ int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	FILE *fp;
-	const char *end, *name, *subtree = ".";
+	const char *end, *subtree = ".";
 	long long val;
 	uint64_t ix = 0, iy = 0;
 	size_t n;
@@ -463,8 +462,7 @@ main(int argc, char *argv[])
 	if (argc > 1)
 		usage();
 
-	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	r = qt_open(fp, name,
+	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    QT_NEEDUNIVERSE);
 	readrings(r);
 	qt_close(r);

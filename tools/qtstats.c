@@ -764,8 +764,6 @@ int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	FILE *fp;
-	const char *name;
 	int ch, table = 0, verbose = 0;
 
 	setprogname_(argv[0]);
@@ -787,8 +785,7 @@ main(int argc, char *argv[])
 
 	mo_init(&poly.region);
 	mo_init(&poly.ring);
-	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	r = qt_open(fp, name,
+	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    verbose ? QT_VERBOSE : 0);
 	readstream(r);
 	qt_close(r);
