@@ -139,9 +139,18 @@ struct qtrec {
 	struct meshelem	 elem;	/* QT_ELEM */
 };
 
+/*
+ * QT_UNSEALED reads what is left of a stream after lines were removed or
+ * cells reordered (grep, head, sort): the qtree line and end records may
+ * stand anywhere or nowhere, an end record's count is not checked, and
+ * cells may come in any order, even inside a leaf or twice; every record
+ * is still checked by itself, and the head (universe, level, rings) must
+ * still come whole and before the cells.
+ */
 enum {
 	QT_NEEDUNIVERSE = 1,	/* a stream without a universe is an error */
-	QT_VERBOSE = 2		/* progress on stderr, as -v asks */
+	QT_VERBOSE = 2,		/* progress on stderr, as -v asks */
+	QT_UNSEALED = 4		/* no seal: see above */
 };
 
 struct qtreader *qt_open(FILE *, const char *, int);
@@ -157,6 +166,7 @@ void	 qt_close(struct qtreader *);
  */
 void	 qt_header(void);
 void	 qt_universe(const struct universe *);
+void	 qt_setuniverse(const struct universe *);
 void	 qt_level(int);
 void	 qt_ring(const struct ring *);
 void	 qt_cell(const struct cell *, unsigned long long);

@@ -23,12 +23,16 @@ saved=tests/regress
 save=0
 [ "${1:-}" = -s ] && save=1
 
-for p in polyread qtsplit qtleaves qtstats qt2svg; do
+for p in polyread qtsplit qtleaves qtstats qt2svg qtcat; do
 	[ -x "./$p" ] || { echo "regress: build first (make)" >&2; exit 2; }
 done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/regress.XXXXXX") || exit 2
 trap 'rm -rf "$tmp"' 0
 trap 'exit 2' HUP INT TERM
+
+# qtcat's case of shards: the level-6 tree of a polygon cut at level 1, the
+# four quadrants' subtrees and the root's stream joined again.
+shards='sh tests/regress/shards.sh'
 
 # Every case: NAME COMMAND...; the command sees $T (a level-6 tree of the
 # input), $I (the input) and $W (a scratch directory).
@@ -57,6 +61,9 @@ cases() {
 		echo "$b.qt2svg-nN|polyread $f | qtsplit -l 3 | qtleaves -n | qt2svg -n -N"
 		echo "$b.qt2svg-n|polyread $f | qtsplit -l 3 | qtleaves | qt2svg -n"
 		echo "$b.qt2svg-v|polyread $f | qtsplit -l 6 | qt2svg -v 2>&1 >/dev/null"
+		echo "$b.qtcat|polyread $f | qtsplit -l 6 | qtcat"
+		echo "$b.qtcat-u|polyread $f | qtsplit -l 6 | grep -v ' E\$' | qtcat -u"
+		echo "$b.qtcat-shards|$shards $f"
 	done
 	# The readers' long way: numbers spelled otherwise than the writers do.
 	echo "odd.qtleaves|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtleaves -n -c FEP"
@@ -78,7 +85,7 @@ cases() {
 		case $b in
 		EXPECT) ;;
 		*.qt)
-			for p in qtsplit qtleaves qtstats qt2svg; do
+			for p in qtsplit qtleaves qtstats qt2svg qtcat; do
 				echo "bad-$b.$p|$p $f"
 			done ;;
 		*)	echo "bad-$b.polyread|polyread $f" ;;
