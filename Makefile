@@ -52,9 +52,9 @@ tools/qt2svg.o tools/qtcat.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it.
-tests/fmtcheck: tests/fmtcheck.c lib/libqtree.a
+tests/fmtcheck: tests/fmtcheck.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtcheck.c lib/libqtree.a $(LDLIBS)
-tests/fmtbench: tests/fmtbench.c lib/libqtree.a
+tests/fmtbench: tests/fmtbench.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtbench.c lib/libqtree.a $(LDLIBS)
 
 test: all tests/fmtcheck
