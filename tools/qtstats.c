@@ -708,6 +708,52 @@ cellfigures(double area)
 }
 
 /* Elements by type, quads first, then the others by name. */
+/*
+ * The quality of the elements: the largest difference of vertex numbers
+ * within one (the bandwidth of the matrices a solver builds), the
+ * smallest interior angle in degrees, and the largest ratio of an
+ * element's longest side to its shortest.
+ */
+static void
+quality(void)
+{
+	unsigned long long band = 0;
+	double minangle = 180, maxratio = 1;
+	size_t e, i;
+
+	for (e = 0; e < mesh.nelems; e++) {
+		size_t start = mesh.eoff[e], n = mesh.eoff[e + 1] - start;
+		uint32_t lo = UINT32_MAX, hi = 0;
+		double shortest = INFINITY, longest = 0;
+
+		for (i = 0; i < n; i++) {
+			uint32_t a = mesh.refs[start + i];
+			uint32_t b = mesh.refs[start + (i + 1) % n];
+			uint32_t c = mesh.refs[start + (i + n - 1) % n];
+			struct point p = mesh.verts[a], q = mesh.verts[b];
+			struct point o = mesh.verts[c];
+			double ux = q.x - p.x, uy = q.y - p.y;
+			double vx = o.x - p.x, vy = o.y - p.y;
+			double len = hypot(ux, uy);
+			double angle = atan2(fabs(ux * vy - uy * vx),
+			    ux * vx + uy * vy) * (180 / 3.14159265358979323846);
+
+			lo = a < lo ? a : lo;
+			hi = a > hi ? a : hi;
+			shortest = fmin(shortest, len);
+			longest = fmax(longest, len);
+			minangle = fmin(minangle, angle);
+		}
+		if (hi - lo > band)
+			band = hi - lo;
+		if (shortest > 0)
+			maxratio = fmax(maxratio, longest / shortest);
+	}
+	putcount("bandwidth", band);
+	putreal("smallest_angle", minangle);
+	putreal("largest_aspect_ratio", maxratio);
+}
+
 static void
 meshfigures(void)
 {
@@ -729,6 +775,8 @@ meshfigures(void)
 		putcount(key, mesh.types[i].n);
 	}
 	putcount("hanging_vertices", counthanging());
+	if (mesh.nelems > 0)
+		quality();
 }
 
 static void
