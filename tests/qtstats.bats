@@ -114,7 +114,8 @@ value() {
 @test "the inverted L and its mesh: every figure and the -l table by hand" {
 	# three full unit squares at (0.5, 0.5), (1.5, 0.5), (0.5, 1.5):
 	# centroid 2.5/3 = 5/6; their 8 distinct corners, none hanging;
-	# elements 1 2 3 4, 2 5 6 3 and 4 3 7 8 (qtleaves.bats): bandwidth 5
+	# elements 1 2 3 4, 2 5 6 3 and 4 3 7 8 (qtleaves.bats): bandwidth 5;
+	# cut at level 0, a stream of leaves alone has no cell: area 0, error 1
 	cat > want <<-'EOF'
 	rings 1
 	holes 0
@@ -150,6 +151,9 @@ value() {
 	# level cells nodes leaves leaves_F leaves_E leaves_P
 	level 0 0 0 0 0 0 0
 	level 1 3 0 3 3 0 0
+	# cut level leaves_F leaves_E leaves_P area_full area_full_partial area_full_relerr area_full_partial_relerr centroid_full_x centroid_full_y centroid_full_partial_x centroid_full_partial_y
+	cut 0 0 0 0 0 0 1 1 - - - -
+	cut 1 3 0 0 3 3 0 0 0.8333333333333334 0.8333333333333334 0.8333333333333334 0.8333333333333334
 	EOF
 	polyread "$FIXTURES/invl.xy" | qtsplit -l 5 | qtleaves -n | qtstats -l > got
 	diff -u want got
@@ -422,7 +426,7 @@ value() {
 			    l[i], k[i, "F"], k[i, "E"], k[i, "P"]
 	    }' t.qt > want
 	[ "$(grep -c '^level' want)" = 9 ]
-	grep -E '^(#|level)' s > got
+	grep -E '^(# level|level)' s > got
 	diff -u want got
 }
 
@@ -455,6 +459,27 @@ value() {
 	[ "$(value deepest_level s)" = 33 ]
 	awk '$1 == "uniform_cells" { ok = $2 == 2 ^ 66 && $2 ~ /e\+/ }
 	    END { exit !ok }' s
+}
+
+@test "-l: the tree cut at each level has the figures of the tree built to it" {
+	# the level-9 tree cut at level K is qtsplit -l K's tree: each cut
+	# line must give the keys of that second, independent run
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 9 a.qt | qtstats -l | awk '$1 == "cut"' > cuts
+	[ "$(wc -l < cuts)" -eq 10 ]
+	for k in 0 1 2 3 4 5 6 7 8 9; do
+		qtsplit -l $k a.qt | qtstats > s
+		awk -v k=$k '$2 == k { print "leaves_F", $3; print "leaves_E", $4
+		    print "leaves_P", $5; print "area_full", $6
+		    print "area_full_partial", $7; print "area_full_relerr", $8
+		    print "area_full_partial_relerr", $9
+		    if ($10 != "-") { print "centroid_full_x", $10
+			print "centroid_full_y", $11 }
+		    print "centroid_full_partial_x", $12
+		    print "centroid_full_partial_y", $13 }' cuts > got
+		grep -E '^(leaves_[FEP]|area_full|centroid_full)' s > want
+		diff -u want got
+	done
 }
 
 @test "a mesh's quality: bandwidth, smallest angle and aspect ratio by hand" {

@@ -31,6 +31,7 @@ struct u128 {
 struct levelstat {
 	unsigned long long	nodes, leaves[3];
 	struct u128		sx[3], sy[3];
+	struct u128		nodesx, nodesy;	/* for the tree cut here */
 };
 
 /* The cells, level by level, of the universe they divide. */
@@ -295,6 +296,8 @@ addcell(const struct cell *c)
 		tree.deepest = c->level;
 	if (c->class == 0) {
 		s->nodes++;
+		add128(&s->nodesx, 2 * c->ix + 1);
+		add128(&s->nodesy, 2 * c->iy + 1);
 		return;
 	}
 	k = c->class == 'F' ? F : c->class == 'E' ? E : P;
@@ -544,17 +547,22 @@ putreal(const char *key, double v)
 	putkey(key, buf);
 }
 
-/* Area of the leaves of the given classes, exactly, as an expansion. */
+/*
+ * Area of the leaves of the given classes, exactly, as an expansion, in
+ * the tree cut at level cut: its leaves down to that level, and its nodes
+ * at that level, which count as partial leaves.
+ */
 static void
-leafarea(struct xsum *s, int withpartial)
+leafarea(struct xsum *s, int withpartial, int cut)
 {
 	int l;
 
-	for (l = 0; l <= tree.deepest; l++) {
+	for (l = 0; l <= cut; l++) {
 		unsigned long long n = tree.lev[l].leaves[F];
 
 		if (withpartial)
-			n += tree.lev[l].leaves[P];
+			n += tree.lev[l].leaves[P] +
+			    (l == cut ? tree.lev[l].nodes : 0);
 		if (n > 0)
 			xs_addprod3(s, ldexp((double)n, -2 * l), tree.u.size,
 			    tree.u.size);
@@ -564,10 +572,10 @@ leafarea(struct xsum *s, int withpartial)
 /*
  * The centroid of the leaves, from the exact sums of 2 IX + 1: a leaf at
  * level l has its centre at X0 + (2 IX + 1) SIZE / 2^(l+1) and weight
- * 4^-l.
+ * 4^-l; in the tree cut at level cut.
  */
 static void
-leafcentroid(const char *kx, const char *ky, int withpartial)
+leafcentroid(double *cx, double *cy, int withpartial, int cut)
 {
 	struct xsum w, mx, my;
 	double sw;
@@ -576,7 +584,7 @@ leafcentroid(const char *kx, const char *ky, int withpartial)
 	xs_init(&w);
 	xs_init(&mx);
 	xs_init(&my);
-	for (l = 0; l <= tree.deepest; l++) {
+	for (l = 0; l <= cut; l++) {
 		const struct levelstat *s = &tree.lev[l];
 		double n = (double)s->leaves[F];
 		double sx = u128real(&s->sx[F]), sy = u128real(&s->sy[F]);
@@ -586,13 +594,18 @@ leafcentroid(const char *kx, const char *ky, int withpartial)
 			sx += u128real(&s->sx[P]);
 			sy += u128real(&s->sy[P]);
 		}
+		if (withpartial && l == cut) {
+			n += (double)s->nodes;
+			sx += u128real(&s->nodesx);
+			sy += u128real(&s->nodesy);
+		}
 		xs_add(&w, ldexp(n, -2 * l));
 		xs_add(&mx, ldexp(sx, -3 * l - 1));
 		xs_add(&my, ldexp(sy, -3 * l - 1));
 	}
 	sw = xs_round(&w);
-	putreal(kx, tree.u.x0 + tree.u.size * (xs_round(&mx) / sw));
-	putreal(ky, tree.u.y0 + tree.u.size * (xs_round(&my) / sw));
+	*cx = tree.u.x0 + tree.u.size * (xs_round(&mx) / sw);
+	*cy = tree.u.y0 + tree.u.size * (xs_round(&my) / sw);
 	xs_free(&w);
 	xs_free(&mx);
 	xs_free(&my);
@@ -656,31 +669,60 @@ depthfigures(unsigned long long leaves)
 }
 
 /* The full leaves, then the full and partial ones, against the polygon. */
+/*
+ * The figures of the leaves' area in the tree cut at level cut: area_full,
+ * area_full_partial, their relative errors (when the polygon has an
+ * area) and centroids (when the leaves have one).
+ */
+struct cutfigures {
+	double	af, afp, erf, erfp, cfx, cfy, cfpx, cfpy;
+	int	haveerr;
+};
+
 static void
-leafareafigures(double area)
+cutfigures(struct cutfigures *f, double area, int cut)
 {
 	struct xsum full, fullpart;
-	double af, afp;
 
 	xs_init(&full);
 	xs_init(&fullpart);
-	leafarea(&full, 0);
-	leafarea(&fullpart, 1);
-	af = xs_round(&full);
-	afp = xs_round(&fullpart);
-	putreal("area_full", af);
-	putreal("area_full_partial", afp);
-	if (area > 0) {
-		putreal("area_full_relerr", relerr(&full, area));
-		putreal("area_full_partial_relerr", relerr(&fullpart, area));
+	leafarea(&full, 0, cut);
+	leafarea(&fullpart, 1, cut);
+	f->af = xs_round(&full);
+	f->afp = xs_round(&fullpart);
+	f->haveerr = area > 0;
+	if (f->haveerr) {
+		f->erf = relerr(&full, area);
+		f->erfp = relerr(&fullpart, area);
 	}
-	if (af > 0)
-		leafcentroid("centroid_full_x", "centroid_full_y", 0);
-	if (afp > 0)
-		leafcentroid("centroid_full_partial_x",
-		    "centroid_full_partial_y", 1);
+	if (f->af > 0)
+		leafcentroid(&f->cfx, &f->cfy, 0, cut);
+	if (f->afp > 0)
+		leafcentroid(&f->cfpx, &f->cfpy, 1, cut);
 	xs_free(&full);
 	xs_free(&fullpart);
+}
+
+static void
+leafareafigures(double area)
+{
+	struct cutfigures f;
+
+	cutfigures(&f, area, tree.deepest);
+	putreal("area_full", f.af);
+	putreal("area_full_partial", f.afp);
+	if (f.haveerr) {
+		putreal("area_full_relerr", f.erf);
+		putreal("area_full_partial_relerr", f.erfp);
+	}
+	if (f.af > 0) {
+		putreal("centroid_full_x", f.cfx);
+		putreal("centroid_full_y", f.cfy);
+	}
+	if (f.afp > 0) {
+		putreal("centroid_full_partial_x", f.cfpx);
+		putreal("centroid_full_partial_y", f.cfpy);
+	}
 }
 
 static void
@@ -779,9 +821,23 @@ meshfigures(void)
 		quality();
 }
 
+/* A real in a table: "-" for a figure that does not exist. */
 static void
-leveltable(void)
+putcolumn(int have, double v)
 {
+	char buf[32];
+
+	printf(" %s", have ? (fmtreal(buf, v), buf) : "-");
+}
+
+/*
+ * The cells per level, then the figures of the tree cut at each level:
+ * the report's area and centroid at every level of precision.
+ */
+static void
+leveltable(double area)
+{
+	struct cutfigures f;
 	int l;
 
 	printf("# level cells nodes leaves leaves_F leaves_E leaves_P\n");
@@ -794,6 +850,30 @@ leveltable(void)
 		    s->nodes + n, s->nodes, n, s->leaves[F], s->leaves[E],
 		    s->leaves[P]);
 	}
+	printf("# cut level leaves_F leaves_E leaves_P area_full "
+	    "area_full_partial area_full_relerr area_full_partial_relerr "
+	    "centroid_full_x centroid_full_y centroid_full_partial_x "
+	    "centroid_full_partial_y\n");
+	for (l = 0; l <= tree.deepest; l++) {
+		unsigned long long n[3] = { 0, 0, 0 };
+		int k, m;
+
+		for (m = 0; m <= l; m++)
+			for (k = 0; k < 3; k++)
+				n[k] += tree.lev[m].leaves[k];
+		n[P] += tree.lev[l].nodes;
+		cutfigures(&f, area, l);
+		printf("cut %d %llu %llu %llu", l, n[F], n[E], n[P]);
+		putcolumn(1, f.af);
+		putcolumn(1, f.afp);
+		putcolumn(f.haveerr, f.erf);
+		putcolumn(f.haveerr, f.erfp);
+		putcolumn(f.af > 0, f.cfx);
+		putcolumn(f.af > 0, f.cfy);
+		putcolumn(f.afp > 0, f.cfpx);
+		putcolumn(f.afp > 0, f.cfpy);
+		printf("\n");
+	}
 }
 
 static void
@@ -805,7 +885,7 @@ report(int table)
 	if (mesh.present)
 		meshfigures();
 	if (table)
-		leveltable();
+		leveltable(area);
 }
 
 int
