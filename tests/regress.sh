@@ -52,6 +52,8 @@ cases() {
 		echo "$b.qtleaves|polyread $f | qtsplit -l 6 | qtleaves"
 		echo "$b.qtleaves-cE|polyread $f | qtsplit -l 6 | qtleaves -c E"
 		echo "$b.qtleaves-n|polyread $f | qtsplit -l 5 | qtleaves -n -c FEP"
+		echo "$b.qtleaves-geojson|polyread $f | qtsplit -l 5 | qtleaves -f geojson"
+		echo "$b.qtleaves-wkt|polyread $f | qtsplit -l 5 | qtleaves -c FEP -f wkt"
 		echo "$b.qtleaves-v|polyread $f | qtsplit -l 6 | qtleaves -v 2>&1 >/dev/null"
 		echo "$b.qtstats|polyread $f | qtsplit -l 6 | qtstats -l"
 		echo "$b.qtstats-mesh|polyread $f | qtsplit -l 5 | qtleaves -n | qtstats"

@@ -32,7 +32,8 @@
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: qtleaves [-nv] [-c classes] [file]\n");
+	fprintf(stderr, "usage: qtleaves [-nv] [-c classes] [-f format] "
+	    "[file]\n");
 	exit(2);
 }
 
@@ -204,6 +205,55 @@ writemesh(void)
 	}
 }
 
+enum format { QTREE, GEOJSON, WKT };
+
+/*
+ * A kept leaf for GIS tools: its square, counter-clockwise from the lower
+ * left and closed, with its path, level, class and element number.
+ */
+static void
+putgis(enum format format, const struct universe *u, const struct cell *c,
+    unsigned long long id)
+{
+	char x[2][32], y[2][32];
+	int i;
+
+	fmtreal(x[0], c->x);
+	fmtreal(y[0], c->y);
+	fmtreal(x[1], u->x0 + (double)(c->ix + 1) * c->size);
+	fmtreal(y[1], u->y0 + (double)(c->iy + 1) * c->size);
+	if (format == WKT) {
+		printf("%s\t%d\t%c\t%llu\tPOLYGON ((", c->path, c->level,
+		    c->class, id);
+		for (i = 0; i < 5; i++)
+			printf("%s%s %s", i > 0 ? ", " : "",
+			    x[(i + 1) / 2 % 2], y[i / 2 % 2]);
+		printf("))\n");
+		return;
+	}
+	printf("%s{\"type\":\"Feature\",\"properties\":{\"path\":\"%s\","
+	    "\"level\":%d,\"class\":\"%c\",\"id\":%llu},\"geometry\":"
+	    "{\"type\":\"Polygon\",\"coordinates\":[[", id > 1 ? ",\n" : "",
+	    c->path, c->level, c->class, id);
+	for (i = 0; i < 5; i++)
+		printf("%s[%s,%s]", i > 0 ? "," : "", x[(i + 1) / 2 % 2],
+		    y[i / 2 % 2]);
+	printf("]]}}");
+}
+
+static enum format
+parseformat(const char *arg)
+{
+	if (strcmp(arg, "qtree") == 0)
+		return QTREE;
+	if (strcmp(arg, "geojson") == 0)
+		return GEOJSON;
+	if (strcmp(arg, "wkt") == 0)
+		return WKT;
+	die(2, "-f: unknown format %s (qtree, geojson, wkt)", arg);
+	return QTREE;
+}
+
 int
 main(int argc, char *argv[])
 {
@@ -211,14 +261,19 @@ main(int argc, char *argv[])
 	struct qtrec rec;
 	enum qtkind kind;
 	unsigned long long id = 0;
+	struct universe u = { 0, 0, 1 };
+	enum format format = QTREE;
 	unsigned keep = CLASSBIT('F') | CLASSBIT('P');
 	int ch, kept, nflag = 0, verbose = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "c:nv")) != -1)
+	while ((ch = getopt(argc, argv, "c:f:nv")) != -1)
 		switch (ch) {
 		case 'c':
 			keep = optclasses(optarg);
+			break;
+		case 'f':
+			format = parseformat(optarg);
 			break;
 		case 'n':
 			nflag = 1;
@@ -233,11 +288,21 @@ main(int argc, char *argv[])
 	argv += optind;
 	if (argc > 1)
 		usage();
+	if (nflag && format != QTREE)
+		die(2, "-n: a mesh is written in the qtree format only");
 
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    verbose ? QT_VERBOSE : 0);
-	qt_header();
+	if (format == QTREE)
+		qt_header();
+	else if (format == GEOJSON)
+		printf("{\"type\":\"FeatureCollection\",\"features\":[\n");
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
+		if (format != QTREE && kind != QT_LEAF) {
+			if (kind == QT_UNIVERSE)
+				u = rec.u;
+			continue;	/* GIS tools take the leaves alone */
+		}
 		switch (kind) {
 		case QT_UNIVERSE:
 			qt_universe(&rec.u);
@@ -252,8 +317,10 @@ main(int argc, char *argv[])
 			break;
 		case QT_LEAF:
 			kept = (keep & CLASSBIT(rec.c.class)) != 0;
-			if (kept)
+			if (kept && format == QTREE)
 				qt_cell(&rec.c, ++id);
+			else if (kept)
+				putgis(format, &u, &rec.c, ++id);
 			if (nflag)
 				meshleaf(&rec.c, kept);
 			break;
@@ -271,7 +338,10 @@ main(int argc, char *argv[])
 	qt_close(r);
 	if (nflag)
 		writemesh();
-	qt_end();
+	if (format == QTREE)
+		qt_end();
+	else if (format == GEOJSON)
+		printf("\n]}\n");
 	closeout();
 	return 0;
 }
