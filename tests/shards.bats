@@ -84,6 +84,12 @@ same() {
 	      "qtsplit -l 8 -r {} p.qt | grep -E '^(node|leaf .* [FP]\$)'"; } |
 	    qtcat -u > got.qt
 	cmp got.qt want.qt
+	# the full leaves counted in each shard and in the top, summed
+	n=$({ qtsplit -l 8 -t 3 p.qt | awk '$1 == "leaf" && $9 == "F"' | wc -l
+	      qtsplit -l 8 -s 3 p.qt | parallel --will-cite \
+	          "qtsplit -l 8 -r {} p.qt | awk '\$1 == \"leaf\" && \$9 == \"F\"' | wc -l"; } |
+	    awk '{ n += $1 } END { print n }')
+	[ "$n" -eq "$(qtsplit -l 8 p.qt | grep -c ' F$')" ]
 }
 
 # An sshd of its own on 127.0.0.1, a high port, with throwaway keys; the
