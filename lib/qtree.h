@@ -140,6 +140,11 @@ struct qtrec {
 };
 
 /*
+ * QT_CONCAT reads an input of several sealed streams one after another, or
+ * of none: qt_read returns QT_EOF at each end record, then qt_next starts
+ * the next stream (1) or finds the end of the input (0); each stream is
+ * checked by itself, its records counted from its qtree line.
+ *
  * QT_UNSEALED reads what is left of a stream after lines were removed or
  * cells reordered (grep, head, sort): the qtree line and end records may
  * stand anywhere or nowhere, an end record's count is not checked, and
@@ -150,12 +155,14 @@ struct qtrec {
 enum {
 	QT_NEEDUNIVERSE = 1,	/* a stream without a universe is an error */
 	QT_VERBOSE = 2,		/* progress on stderr, as -v asks */
-	QT_UNSEALED = 4		/* no seal: see above */
+	QT_UNSEALED = 4,	/* no seal: see above */
+	QT_CONCAT = 8		/* sealed streams one after another, or none */
 };
 
 struct qtreader *qt_open(FILE *, const char *, int);
 struct qtreader *qt_openpath(const char *, int);	/* "-": stdin */
 enum qtkind qt_read(struct qtreader *, struct qtrec *);
+int	 qt_next(struct qtreader *);
 const char *qt_name(const struct qtreader *);
 void	 qt_fail(const struct qtreader *, const char *, ...);
 void	 qt_close(struct qtreader *);

@@ -722,6 +722,9 @@ endrec(struct qtreader *r, const char *line)
 	if (count < 0 || (unsigned long long)count != r->count)
 		qt_fail(r, "end record counts %lld records, the stream "
 		    "has %llu", count, r->count);
+	if ((r->flags & (QT_CONCAT | QT_NEEDUNIVERSE)) ==
+	    (QT_CONCAT | QT_NEEDUNIVERSE) && !r->haveuniverse)
+		qt_fail(r, "no universe record");
 	r->state = AFTER_END;
 }
 
@@ -855,6 +858,8 @@ readline(struct qtreader *r, size_t *len)
 static void
 atend(struct qtreader *r)
 {
+	if (r->state == BEFORE_HEADER && (r->flags & QT_CONCAT))
+		return;		/* no stream at all */
 	if (r->state == BEFORE_HEADER || r->lineno == 0)
 		qt_fail(r, "empty input: not a qtree stream");
 	if (r->vleft > 0 && (r->flags & QT_UNSEALED))
@@ -905,12 +910,46 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 			qt_fail(r, "data after the end record");
 			break;
 		default:
-			if ((kind = body(r, rec, line, n)) == 0 ||
-			    kind == QT_EOF)
+			if ((kind = body(r, rec, line, n)) == 0 &&
+			    r->state == AFTER_END && (r->flags & QT_CONCAT))
+				return QT_EOF;	/* qt_next goes on */
+			if (kind == 0 || kind == QT_EOF)
 				continue;	/* after the end, EOF must follow */
 			if ((r->count & 0xfffff) == 0)
 				report(r, 0);
 			return kind;
 		}
 	}
+}
+
+/*
+ * After QT_EOF under QT_CONCAT: starts the next stream, its qtree line
+ * read, and returns 1; returns 0 at the end of the input.
+ */
+int
+qt_next(struct qtreader *r)
+{
+	char *line;
+	size_t n;
+
+	for (;;) {
+		if ((line = readline(r, &n)) == NULL) {
+			atend(r);
+			return 0;
+		}
+		r->lineno++;
+		if (strlen(line) != n)
+			qt_fail(r, "NUL byte in line");
+		if (line[0] != '#')
+			break;
+	}
+	if (r->state != AFTER_END || strncmp(line, "qtree ", 6) != 0)
+		qt_fail(r, "data after the end record");
+	/* a stream of its own: its head again, its records counted anew */
+	r->count = 0;
+	r->haveuniverse = r->havelevel = r->havecells = 0;
+	r->nrings = 0;
+	r->nvertex = r->nelem = 0;
+	header(r, line);
+	return 1;
 }

@@ -164,6 +164,53 @@ whole() {
 	[[ "$stderr" == "qtcat: $d/tri-S-1/0.qt:3: another level: level 8, where stdin:3 has level 1" ]]
 }
 
+@test "shards one after another in one input, in preorder, join as one input" {
+	d=$BATS_FILE_TMPDIR
+	for t in amoeba tri; do
+		for k in 1 2; do
+			cat $d/$t-P-$k/*.qt > cat.qt
+			qtcat $d/$t-topfe-$k.qt cat.qt > out.qt
+			diff -u "$(whole $t)" out.qt
+			qtcat $d/$t-topn-$k.qt - < cat.qt > out.qt
+			diff -u "$(whole $t)" out.qt
+		done
+	done
+}
+
+@test "streams of an input out of preorder are refused where the later one starts" {
+	d=$BATS_FILE_TMPDIR
+	cat $d/tri-S-1/2.qt $d/tri-S-1/1.qt > cat.qt
+	n=$(($(wc -l < $d/tri-S-1/2.qt) + $(grep -n -m 1 '^node' $d/tri-S-1/1.qt | cut -d: -f1)))
+	m=$(($(grep -n '^leaf 23 ' $d/tri-S-1/2.qt | cut -d: -f1)))
+	awk '($1 == "node" || $1 == "leaf") && $2 ~ /^2./ { next } 1' \
+	    "$(whole tri)" | qtcat -u > top.qt
+	run -1 --separate-stderr qtcat top.qt cat.qt
+	[ "$stderr" = "qtcat: cat.qt:$n: cell 1 comes before cell 23 (line $m) in preorder: an input's streams must follow each other in preorder" ]
+}
+
+@test "a later stream of an input with another head is refused at its line" {
+	d=$BATS_FILE_TMPDIR
+	{ cat $d/tri-S-1/0.qt; qtsplit -l 7 -r 1 $d/tri.qt; } > cat.qt
+	n=$(($(wc -l < $d/tri-S-1/0.qt) + 3))
+	run -1 --separate-stderr qtcat $d/tri-top-1.qt cat.qt
+	[ "$stderr" = "qtcat: cat.qt:$n: another level: level 7, where $d/tri-top-1.qt:3 has level 8" ]
+	{ cat $d/tri-S-1/0.qt; echo 'leaf 1 1 1 0 1 0 1 P'; } > cat.qt
+	run -1 --separate-stderr qtcat $d/tri-top-1.qt cat.qt
+	[[ "$stderr" == "qtcat: cat.qt:"*": data after the end record" ]]
+}
+
+@test "an empty input adds no cells; inputs all empty are refused" {
+	w=$(whole tri)
+	: > empty
+	run -0 bash -c 'qtcat empty "$1" - < /dev/null | cmp - "$1"' _ "$w"
+	run -1 --separate-stderr qtcat empty - < /dev/null
+	[ "$stderr" = "qtcat: empty: empty input: not a qtree stream" ]
+	# a shard's stream lost is still a cell missing
+	d=$BATS_FILE_TMPDIR
+	run -1 --separate-stderr qtcat $d/tri-topn-1.qt empty
+	[ "$stderr" = "qtcat: $d/tri-topn-1.qt:11: cell 10 is missing: cell 2 comes after cell 1 ($d/tri-topn-1.qt:10)" ]
+}
+
 @test "-u: a shard missing, the cells given come out sealed and readable" {
 	d=$BATS_FILE_TMPDIR
 	run -0 bash -c 'qtcat -u "$1"/tri-top-1.qt "$1"/tri-S-1/[013].qt |

@@ -187,6 +187,47 @@ uniform() {
 	[ "$stderr" = "qtsplit: -r: no cell 123 in the tree: cell 1 is a leaf" ]
 }
 
+@test "-s lists the nodes of the single run at the level of the cut, and nothing else" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 8 -m 2 a.qt > full.qt
+	for k in 0 1 2 3 7 8 9; do
+		awk -v k=$k '$1 == "node" && $3 == k { print $2 }' full.qt > want
+		qtsplit -l 8 -m 2 -s $k a.qt > got
+		diff -u want got
+	done
+	# the cut at level 8 has no shards; -m 2 splits the empty corners at 1
+	[ ! -s got ]
+	[ "$(qtsplit -l 8 -m 2 -s 1 a.qt | wc -l)" -eq 4 ]
+}
+
+@test "-t writes the single run's cells of the levels down to the cut" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 8 a.qt > full.qt
+	for k in 0 1 3 8 9; do
+		awk -v k=$k '($1 == "node" || $1 == "leaf") && $3 > k { next }
+		    1' full.qt | qtcat -u > want
+		qtsplit -l 8 -t $k a.qt > got
+		diff -u want got
+	done
+}
+
+@test "-s and -t under -r cut the subtree; a cut above its cell is refused" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 8 -s 4 a.qt | grep '^03' > want
+	qtsplit -l 8 -r 03 -s 4 a.qt > got
+	diff -u want got
+	qtsplit -l 8 -r 03 a.qt | awk '($1 == "node" || $1 == "leaf") &&
+	    $3 > 4 { next } 1' | qtcat -u > want
+	qtsplit -l 8 -r 03 -t 4 a.qt > got
+	diff -u want got
+	run -2 --separate-stderr qtsplit -l 8 -r 03 -s 1 a.qt
+	[ "$stderr" = "qtsplit: -s 1 is above the cell 03" ]
+	run -2 --separate-stderr qtsplit -s 1 -t 1 a.qt
+	[ "$stderr" = "usage: qtsplit [-v] [-l level] [-m level] [-r path] [-s level | -t level] [file]" ]
+	run -2 --separate-stderr qtsplit -s 51 a.qt
+	[ "$stderr" = "qtsplit: -s: level must be an integer from 0 to 50: 51" ]
+}
+
 @test "-m splits every cell down to the minimum level" {
 	# the report's case 5 (see above) split to level 3 in the universe
 	# 0 0 2: the 16 cells of the south-east quadrant (IX >= 4, IY < 4)

@@ -28,6 +28,9 @@ for p in polyread qtsplit qtleaves qtstats qt2svg qtcat; do
 done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/regress.XXXXXX") || exit 2
 trap 'rm -rf "$tmp"' 0
+W=$tmp/w
+mkdir "$W" || exit 2
+export W
 trap 'exit 2' HUP INT TERM
 
 # qtcat's case of shards: the level-6 tree of a polygon cut at level 1, the
@@ -66,6 +69,9 @@ cases() {
 		echo "$b.qtcat|polyread $f | qtsplit -l 6 | qtcat"
 		echo "$b.qtcat-u|polyread $f | qtsplit -l 6 | grep -v ' E\$' | qtcat -u"
 		echo "$b.qtcat-shards|$shards $f"
+		echo "$b.qtsplit-s|polyread $f | qtsplit -l 6 -s 2"
+		echo "$b.qtsplit-t|polyread $f | qtsplit -l 6 -t 2"
+		echo "$b.qtcat-concat|polyread $f > \$W/p && qtsplit -l 6 -t 2 \$W/p > \$W/t && for r in \$(qtsplit -l 6 -s 2 \$W/p); do qtsplit -l 6 -r \$r \$W/p; done | qtcat \$W/t -"
 	done
 	# The readers' long way: numbers spelled otherwise than the writers do.
 	echo "odd.qtleaves|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtleaves -n -c FEP"

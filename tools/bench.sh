@@ -6,8 +6,9 @@
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
-# Then tools/benchir.sh: every program's instructions a record, by
-# callgrind, when valgrind is installed.
+# Then tools/benchshards.sh: the speed-up of shards made by GNU parallel
+# -j 2 over a single run; and tools/benchir.sh: every program's
+# instructions a record, by callgrind, when valgrind is installed.
 #
 # Polygons (tools/genpoly.awk, the same with any awk): star polygons of
 # N = 10^2 ... 10^6 vertices around a square hole, and Koch snowflakes
@@ -319,6 +320,10 @@ if [ -n "$big" ]; then
 	catmerge "$1"
 	rm -f "$tmp/big.qt"
 fi
+
+# Shards over GNU parallel -j 2 against a single run, and what limits it.
+echo
+sh tools/benchshards.sh
 
 # Instructions a record, a figure that the machine's noise does not move.
 if command -v valgrind >/dev/null 2>&1; then

@@ -27,6 +27,7 @@ struct input {
 	struct qtreader	*r;
 	struct qtrec	 rec;	/* the current cell */
 	int		 done;
+	long		 lineno;	/* of the cell before it */
 };
 
 /* A cell held under -u: what qt_cell needs, and where it was read. */
@@ -42,9 +43,10 @@ struct heldcell {
 static struct input *in;
 static int nin, unsealed;
 
-/* The first input's head, to compare and write. */
+/* The first head read, to compare and write, and its input's name. */
 static struct qtrec **head;
 static size_t nhead, headcap;
+static const char *headname;
 
 /* The last cell written, and the first: the tree's root. */
 struct written {
@@ -71,6 +73,21 @@ static const char *
 pathname(const char *path, int level)
 {
 	return level > 0 ? path : ".";
+}
+
+/* The path of cell (level, ix, iy) into path, "." for the root. */
+static const char *
+cellpath(char *path, int level, uint64_t ix, uint64_t iy)
+{
+	int k;
+
+	for (k = 0; k < level; k++) {
+		int b = level - 1 - k;
+
+		path[k] = '0' + (int)((ix >> b & 1) | (iy >> b & 1) << 1);
+	}
+	path[level] = '\0';
+	return pathname(path, level);
 }
 
 /* The word that names a record of the head in messages. */
@@ -114,27 +131,27 @@ samehead(const struct input *p, size_t j, const struct qtrec *rec, long line)
 		return;
 	if (rec == NULL)
 		errat(p->name, line, "another polygon: the head ends here, "
-		    "where %s:%ld has a %s record", in[0].name, h->lineno,
+		    "where %s:%ld has a %s record", headname, h->lineno,
 		    recword(h, wa, sizeof(wa)));
 	if (h == NULL)
 		errat(p->name, rec->lineno, "another polygon: a %s record "
 		    "after the head of %s", recword(rec, wa, sizeof(wa)),
-		    in[0].name);
+		    headname);
 	if (rec->kind != h->kind || (rec->kind == QT_OTHER &&
 	    strcmp(recword(rec, wa, sizeof(wa)), recword(h, wb, sizeof(wb)))))
 		errat(p->name, rec->lineno, "another polygon: a %s record "
 		    "where %s:%ld has a %s record",
-		    recword(rec, wa, sizeof(wa)), in[0].name, h->lineno,
+		    recword(rec, wa, sizeof(wa)), headname, h->lineno,
 		    recword(h, wb, sizeof(wb)));
 	switch (rec->kind) {
 	case QT_UNIVERSE:
 		errat(p->name, rec->lineno, "another universe: %.*s, where "
-		    "%s:%ld has %.*s", (int)rec->len, rec->line, in[0].name,
+		    "%s:%ld has %.*s", (int)rec->len, rec->line, headname,
 		    h->lineno, (int)h->len, h->line);
 		break;
 	case QT_LEVEL:
 		errat(p->name, rec->lineno, "another level: %.*s, where "
-		    "%s:%ld has %.*s", (int)rec->len, rec->line, in[0].name,
+		    "%s:%ld has %.*s", (int)rec->len, rec->line, headname,
 		    h->lineno, (int)h->len, h->line);
 		break;
 	case QT_RING:
@@ -146,31 +163,62 @@ samehead(const struct input *p, size_t j, const struct qtrec *rec, long line)
 			if (a[k] == '\n')
 				la++, lb++;
 		errat(p->name, la, "another polygon: ring %ld differs from "
-		    "%s:%ld", rec->ring.id, in[0].name, lb);
+		    "%s:%ld", rec->ring.id, headname, lb);
 		break;
 	default:
 		errat(p->name, rec->lineno, "another polygon: %s record "
 		    "differs from %s:%ld", recword(rec, wa, sizeof(wa)),
-		    in[0].name, h->lineno);
+		    headname, h->lineno);
 		break;
 	}
+}
+
+static int readhead(struct input *);
+
+/*
+ * The first cell of the next stream of input p that has one, into p->rec,
+ * after the stream that ended; returns 0 at the end of the input.
+ */
+static int
+nextstream(struct input *p)
+{
+	while (qt_next(p->r))
+		if (readhead(p))
+			return 1;
+	qt_close(p->r);
+	p->done = 1;
+	return 0;
 }
 
 /*
  * The next record of input p that is a cell, into p->rec; records of
  * other kinds between cells are written as met.  Returns 0 at the end.
+ * An input's streams, one after another, are one merge source: their
+ * cells must come in preorder across them too.
  */
 static int
 nextcell(struct input *p)
 {
 	enum qtkind kind;
+	char path[QT_MAXLEVEL + 1];
+	struct cell prev;
 
+	prev.level = p->rec.c.level;
+	prev.ix = p->rec.c.ix;
+	prev.iy = p->rec.c.iy;
+	p->lineno = p->rec.lineno;
 	for (;;) {
 		switch (kind = qt_read(p->r, &p->rec)) {
 		case QT_EOF:
-			qt_close(p->r);
-			p->done = 1;
-			return 0;
+			if (!nextstream(p))
+				return 0;
+			if (cellcmp(&prev, &p->rec.c) > 0)
+				errat(p->name, p->rec.lineno, "cell %s comes "
+				    "before cell %s (line %ld) in preorder: "
+				    "an input's streams must follow each other "
+				    "in preorder", p->rec.c.path, cellpath(path,
+				    prev.level, prev.ix, prev.iy), p->lineno);
+			return 1;
 		case QT_NODE:
 		case QT_LEAF:
 			return 1;
@@ -188,16 +236,19 @@ nextcell(struct input *p)
 }
 
 /*
- * Reads input p's head, up to its first cell: the first input's is kept,
- * every other one compared with it.
+ * Reads the head of input p's stream, up to its first cell, which goes to
+ * p->rec: the first head read is kept, every other one compared with it.
+ * Returns 1 at a cell, 0 at the stream's end or, when the input holds no
+ * stream, at its end.
  */
-static void
+static int
 readhead(struct input *p)
 {
 	struct qtrec rec;
 	enum qtkind kind;
 	size_t j = 0;
 	long line = 0;
+	int keep = headname == NULL;
 
 	while ((kind = qt_read(p->r, &rec)) != QT_EOF) {
 		if (kind == QT_NODE || kind == QT_LEAF)
@@ -206,7 +257,7 @@ readhead(struct input *p)
 			qt_fail(p->r, "the input holds a mesh (%s record): "
 			    "qtcat joins trees",
 			    kind == QT_ELEM ? "elem" : "vertex");
-		if (p == in) {
+		if (keep) {
 			if (nhead == headcap) {
 				headcap = headcap ? 2 * headcap : 16;
 				head = xreallocarray(head, headcap,
@@ -220,13 +271,16 @@ readhead(struct input *p)
 		line = rec.lineno + (long)rec.nrec - 1;
 		j++;
 	}
-	if (kind == QT_EOF) {
-		p->done = 1;
-		qt_close(p->r);
-	} else
-		p->rec = rec;
-	if (p != in)
+	if (kind == QT_EOF && j == 0)
+		return 0;	/* no stream: each has a universe */
+	if (keep)
+		headname = p->name;
+	else
 		samehead(p, j, NULL, kind == QT_EOF ? line : rec.lineno);
+	if (kind == QT_EOF)
+		return 0;
+	p->rec = rec;
+	return 1;
 }
 
 /*
@@ -448,7 +502,7 @@ sortcells(void)
 	char path[QT_MAXLEVEL + 1];
 	struct cell c;
 	size_t i;
-	int i0, k;
+	int i0;
 
 	for (i0 = 0; i0 < nin; i0++)
 		if (!in[i0].done)
@@ -463,14 +517,7 @@ sortcells(void)
 		c.iy = held[i].iy;
 		c.class = held[i].class;
 		c.id = held[i].id;
-		for (k = 0; k < c.level; k++) {
-			int b = c.level - 1 - k;
-
-			path[k] = '0' + (int)((c.ix >> b & 1) |
-			    (c.iy >> b & 1) << 1);
-		}
-		path[c.level] = '\0';
-		c.path = pathname(path, c.level);
+		c.path = cellpath(path, c.level, c.ix, c.iy);
 		putcell(&c, in[held[i].input].name, held[i].lineno);
 	}
 	free(held);
@@ -508,20 +555,23 @@ main(int argc, char *argv[])
 			die(2, "the standard input (-) named twice");
 		fp = openin(argv[i], &in[i].name);
 		in[i].r = qt_open(fp, in[i].name,
-		    QT_NEEDUNIVERSE | (unsealed ? QT_UNSEALED : 0));
-		readhead(&in[i]);
+		    QT_NEEDUNIVERSE | (unsealed ? QT_UNSEALED : QT_CONCAT));
+		if (!readhead(&in[i]))
+			nextstream(&in[i]);
 	}
+	if (headname == NULL)
+		errat(in[0].name, 0, "empty input: not a qtree stream");
 	qt_header();
-	for (j = 0; j < nhead; j++) {
+	for (j = 0; j < nhead; j++)
 		qt_echo(head[j]);
-		qt_free(head[j]);
-	}
-	free(head);
 	if (unsealed)
 		sortcells();
 	else
 		merge();
 	endtree();
+	for (j = 0; j < nhead; j++)	/* the heads of later streams */
+		qt_free(head[j]);
+	free(head);
 	free(in);
 	qt_end();
 	closeout();

@@ -22,11 +22,16 @@ struct edge {
 	double	xmin, ymin, xmax, ymax;
 };
 
-/* What the options ask for; maxlevel is -1 until the stream is read. */
+/*
+ * What the options ask for; maxlevel is -1 until the stream is read.  A
+ * cut (-s, -t) at level cut: the tree above it with its nodes there (-t),
+ * or their paths alone (-s), the roots of the shards below.
+ */
 static struct options {
 	int	minlevel, maxlevel;
 	int	verbose;
-} opt = { .maxlevel = -1 };
+	int	cut, cutopt;
+} opt = { .maxlevel = -1, .cut = -1 };
 
 /*
  * The stream: its universe, its rings' edges, and its records to write as
@@ -61,7 +66,7 @@ static void
 usage(void)
 {
 	fprintf(stderr, "usage: qtsplit [-v] [-l level] [-m level] [-r path] "
-	    "[file]\n");
+	    "[-s level | -t level] [file]\n");
 	exit(2);
 }
 
@@ -115,6 +120,8 @@ emit(int level, uint64_t ix, uint64_t iy, char class)
 {
 	struct cell c;
 
+	if (opt.cutopt == 's')
+		return;
 	c.path = level > 0 ? walk.path : ".";
 	c.level = level;
 	c.ix = ix;
@@ -246,6 +253,14 @@ splits(int level, size_t n)
 	return level < opt.minlevel || (n > 0 && level < opt.maxlevel);
 }
 
+/* A node at the cut: -s lists its path, -t has written it. */
+static void
+shardroot(int level)
+{
+	if (opt.cutopt == 's' && printf("%s\n", level > 0 ? walk.path : ".") < 0)
+		die(1, "write error");
+}
+
 /* Writes the cell and its subtree; its edges are list[level].edges[0..n-1]. */
 static void
 visit(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
@@ -257,6 +272,10 @@ visit(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
 		return;
 	}
 	emit(level, ix, iy, 0);
+	if (level == opt.cut) {
+		shardroot(level);
+		return;
+	}
 	if (n > 0)
 		children(level, ix, iy, n, inside, parity);
 	else
@@ -435,18 +454,26 @@ main(int argc, char *argv[])
 	int ch, inside, level, i;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "l:m:r:v")) != -1)
+	while ((ch = getopt(argc, argv, "l:m:r:s:t:v")) != -1)
 		switch (ch) {
 		case 'l':
 		case 'm':
+		case 's':
+		case 't':
 			if (parselong(optarg, &end, &val) < 0 || *end != '\0' ||
 			    val < 0 || val > QT_MAXLEVEL)
 				die(2, "-%c: level must be an integer from 0 "
 				    "to %d: %s", ch, QT_MAXLEVEL, optarg);
 			if (ch == 'l')
 				opt.maxlevel = val;
-			else
+			else if (ch == 'm')
 				opt.minlevel = val;
+			else if (opt.cutopt != 0 && opt.cutopt != ch)
+				usage();
+			else {
+				opt.cut = val;
+				opt.cutopt = ch;
+			}
 			break;
 		case 'r':
 			subtree = optarg;
@@ -474,12 +501,17 @@ main(int argc, char *argv[])
 	for (i = 0; i <= QT_MAXLEVEL; i++)
 		walk.step[i] = ldexp(in.u.size, -i);
 
-	writehead();
+	if (opt.cutopt != 's')
+		writehead();
 	inside = rootparity();
 	n = rootlist();
 	level = descend(subtree, &ix, &iy, &n, &inside);
+	if (opt.cutopt != 0 && opt.cut < level)
+		die(2, "-%c %d is above the cell %s", opt.cutopt, opt.cut,
+		    subtree);
 	visit(level, ix, iy, n, inside);
-	qt_end();
+	if (opt.cutopt != 's')
+		qt_end();
 	report(1);
 	closeout();
 	return 0;

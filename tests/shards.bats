@@ -1,0 +1,186 @@
+#!/usr/bin/env bats
+# Shards over GNU parallel: qtsplit -s lists the roots of a cut, parallel -k
+# runs qtsplit -r on each, qtcat joins their streams with the top (-t), and
+# the result is byte for byte a single run, for every level of the cut; the
+# README's multi-host recipe run for real against an sshd on 127.0.0.1.
+
+load test_helper
+
+need_parallel() {
+	command -v parallel >/dev/null 2>&1 ||
+		skip "GNU parallel is absent (Debian package parallel)"
+}
+
+# sharded FILE LEVEL K: the README's one-machine recipe, two jobs at a time.
+sharded() {
+	qtsplit -l "$2" -t "$3" "$1" > top.qt || return 1
+	qtsplit -l "$2" -s "$3" "$1" |
+	    parallel --will-cite -j 2 -k qtsplit -l "$2" -r {} "$1" |
+	    qtcat top.qt -
+}
+
+# same FILE LEVEL K...: the sharded stream of each cut is the single run's.
+same() {
+	f=$1 l=$2
+	shift 2
+	qtsplit -l "$l" "$f" > whole.qt
+	for k in "$@"; do
+		sharded "$f" "$l" "$k" > out.qt
+		cmp out.qt whole.qt || { echo "cut at level $k differs"; return 1; }
+	done
+}
+
+@test "every sample, cut at every level from 0 to the tree's: the single run's bytes" {
+	need_parallel
+	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt \
+	    "$SAMPLES"/*.poly; do
+		polyread "$f" > p.qt
+		same p.qt 6 0 1 2 3 4 5 6 7
+	done
+}
+
+@test "a real coastline, Norway's at level 14, cut at levels 0, 2, 4 and 14" {
+	need_parallel
+	need_shared
+	polyread "$SHARED/countries/nor_mainland_ne10m.xy" > p.qt
+	[ "$(qtsplit -l 14 -s 4 p.qt | wc -l)" -gt 40 ]
+	same p.qt 14 0 2 4 14
+}
+
+@test "a generated star of 10^5 vertices at level 12, cut at levels 0, 1, 3 and 12" {
+	need_parallel
+	awk -v shape=star -v n=100000 -f "$TOP/tools/genpoly.awk" | polyread > p.qt
+	[ "$(grep -c "^v " p.qt)" -eq 100004 ]	# and the hole's 4
+	same p.qt 12 0 1 3 12
+}
+
+@test "a cut with no shards: the top alone is the tree, parallel runs nothing" {
+	need_parallel
+	polyread "$SAMPLES/invl.brep" > p.qt
+	[ -z "$(qtsplit -l 20 -s 1 p.qt)" ]
+	same p.qt 20 1 2
+}
+
+@test "qtsplit(1): the example of shards prints what the page says" {
+	need_parallel
+	cp "$SAMPLES/amoeba.brep" .
+	polyread amoeba.brep > amoeba.qt
+	qtsplit -l 8 amoeba.qt > whole.qt
+	[ "$(qtsplit -l 8 -s 3 amoeba.qt | wc -l)" -eq 42 ]
+	qtsplit -l 8 -t 3 amoeba.qt > top.qt
+	run -0 bash -c 'qtsplit -l 8 -s 3 amoeba.qt |
+	    parallel --will-cite -j 2 -k qtsplit -l 8 -r {} amoeba.qt |
+	    qtcat top.qt - | cmp - whole.qt && echo same'
+	[ "$output" = same ]
+}
+
+@test "README: filtered where the shards are made, sealed by qtcat -u" {
+	need_parallel
+	polyread "$SAMPLES/amoeba.brep" > p.qt
+	qtsplit -l 8 p.qt | grep -v ' E$' | qtcat -u > want.qt
+	# the README's recipe: the shards' nodes and full and partial leaves
+	{ qtsplit -l 8 -t 2 p.qt | grep -v ' E$'
+	  qtsplit -l 8 -s 2 p.qt | parallel --will-cite -k \
+	      "qtsplit -l 8 -r {} p.qt | grep -E '^(node|leaf .* [FP]\$)'"; } |
+	    qtcat -u > got.qt
+	cmp got.qt want.qt
+	# the full leaves counted in each shard and in the top, summed
+	n=$({ qtsplit -l 8 -t 3 p.qt | awk '$1 == "leaf" && $9 == "F"' | wc -l
+	      qtsplit -l 8 -s 3 p.qt | parallel --will-cite \
+	          "qtsplit -l 8 -r {} p.qt | awk '\$1 == \"leaf\" && \$9 == \"F\"' | wc -l"; } |
+	    awk '{ n += $1 } END { print n }')
+	[ "$n" -eq "$(qtsplit -l 8 p.qt | grep -c ' F$')" ]
+}
+
+# An sshd of its own on 127.0.0.1, a high port, with throwaway keys; the
+# ssh client's options in ssh.cfg under the host name qtree-test.
+start_sshd() {
+	[ -x /usr/sbin/sshd ] ||
+		skip "sshd is absent (Debian package openssh-server)"
+	command -v rsync >/dev/null 2>&1 ||
+		skip "rsync is absent: parallel moves files with it"
+	d=$BATS_TEST_TMPDIR/ssh
+	mkdir -p "$d"
+	ssh-keygen -q -t ed25519 -N '' -f "$d/host" || return 1
+	ssh-keygen -q -t ed25519 -N '' -f "$d/user" || return 1
+	cp "$d/user.pub" "$d/authorized_keys"
+	# privilege separation needs its directory when sshd runs as root
+	[ "$(id -u)" -ne 0 ] || mkdir -p /run/sshd
+	for port in $(seq $((30000 + $$ % 20000)) $((30019 + $$ % 20000))); do
+		cat > "$d/sshd.cfg" <<-EOF
+		Port $port
+		ListenAddress 127.0.0.1
+		HostKey $d/host
+		AuthorizedKeysFile $d/authorized_keys
+		PidFile $d/sshd.pid
+		UsePAM no
+		StrictModes no
+		PermitRootLogin yes
+		PasswordAuthentication no
+		KbdInteractiveAuthentication no
+		EOF
+		/usr/sbin/sshd -f "$d/sshd.cfg" -E "$d/sshd.log" || continue
+		# the ssh connections of parallel's steps share one master
+		cat > "$d/ssh.cfg" <<-EOF
+		Host qtree-test
+		    HostName 127.0.0.1
+		    Port $port
+		    User $(id -un)
+		    IdentityFile $d/user
+		    IdentitiesOnly yes
+		    StrictHostKeyChecking no
+		    UserKnownHostsFile /dev/null
+		    BatchMode yes
+		    LogLevel ERROR
+		    ControlMaster auto
+		    ControlPath $d/cm-%C
+		    ControlPersist 60
+		EOF
+		for i in $(seq 50); do
+			ssh -F "$d/ssh.cfg" qtree-test true 2>/dev/null &&
+				return 0
+			sleep 0.2
+		done
+		stop_sshd
+	done
+	cat "$d/sshd.log" >&2
+	return 1
+}
+
+stop_sshd() {
+	d=$BATS_TEST_TMPDIR/ssh
+	[ -f "$d/ssh.cfg" ] && ssh -F "$d/ssh.cfg" -O exit qtree-test 2>/dev/null
+	[ -f "$d/sshd.pid" ] && kill "$(cat "$d/sshd.pid")"
+	rm -f "$d/sshd.pid"
+}
+
+teardown() {
+	stop_sshd 2>/dev/null || true
+}
+
+@test "README: the multi-host recipe over ssh, input by --basefile, shards back by --return" {
+	need_parallel
+	start_sshd
+	polyread "$SAMPLES/amoeba.brep" > p.qt
+	qtsplit -l 8 p.qt > whole.qt
+	echo 2/qtree-test > hosts
+	# the README's recipe; the programs' directory on the remote PATH
+	qtsplit -l 8 -t 1 p.qt > top.qt
+	qtsplit -l 8 -s 1 p.qt |
+	    parallel --will-cite --ssh "ssh -F $BATS_TEST_TMPDIR/ssh/ssh.cfg" \
+	        --sshloginfile hosts --env PATH --wd "$BATS_TEST_TMPDIR/remote" \
+	        --basefile p.qt --return {}.qt --cleanup \
+	        'qtsplit -l 8 -r {} p.qt > {}.qt'
+	[ "$(ls [0-3].qt | wc -l)" -eq 4 ]
+	qtsplit -l 8 -s 1 p.qt | sed 's/$/.qt/' | xargs cat | qtcat top.qt - > out.qt
+	cmp out.qt whole.qt
+	# the remote side was cleaned up
+	[ ! -e "$BATS_TEST_TMPDIR/remote/p.qt" ]
+	# the same jobs' standard outputs, brought back by ssh, in order
+	qtsplit -l 8 -s 1 p.qt |
+	    parallel --will-cite -k --ssh "ssh -F $BATS_TEST_TMPDIR/ssh/ssh.cfg" \
+	        --sshloginfile hosts --env PATH --wd "$BATS_TEST_TMPDIR/remote" \
+	        --basefile p.qt --cleanup qtsplit -l 8 -r {} p.qt |
+	    qtcat top.qt - > out.qt
+	cmp out.qt whole.qt
+}
