@@ -41,13 +41,19 @@ zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
 	return ay < by;
 }
 
+/*
+ * Grid points of coarse cells end in many zero bits, which a product
+ * keeps: the high bits are folded down before the slot is taken.
+ */
 static size_t
 slotof(const struct corners *t, uint64_t x, uint64_t y)
 {
-	uint64_t h = x * UINT64_C(0x9E3779B97F4A7C15) ^
-	    y * UINT64_C(0xC2B2AE3D27D4EB4F);
+	uint64_t h = x ^ y * UINT64_C(0x9E3779B97F4A7C15);
 
-	return (h ^ h >> 31) & (t->cap - 1);
+	h ^= h >> 33;
+	h *= UINT64_C(0xFF51AFD7ED558CCD);
+	h ^= h >> 33;
+	return h & (t->cap - 1);
 }
 
 static void

@@ -280,11 +280,13 @@ sides(struct leaf *l)
 static size_t
 pendslot(uint64_t x, uint64_t y)
 {
-	uint64_t h = x * UINT64_C(0x9E3779B97F4A7C15) ^
-	    y * UINT64_C(0xC2B2AE3D27D4EB4F);
+	uint64_t h = x ^ y * UINT64_C(0x9E3779B97F4A7C15);
 	size_t k;
 
-	for (k = (h ^ h >> 31) & (pendcap - 1); pend[k].h != 0;
+	h ^= h >> 33;
+	h *= UINT64_C(0xFF51AFD7ED558CCD);
+	h ^= h >> 33;
+	for (k = h & (pendcap - 1); pend[k].h != 0;
 	    k = (k + 1) & (pendcap - 1))
 		if (pend[k].x == x && pend[k].y == y)
 			break;
