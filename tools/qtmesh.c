@@ -737,7 +737,7 @@ writeqtree(size_t nv, const uint32_t *inv)
 static void
 writemsh(size_t nv, const uint32_t *inv)
 {
-	long long iv[8];
+	long long iv[9];
 	double xy[3];
 	size_t i, e = 0, j, id = 0;
 	int k, n, tags[5] = { 0 };
