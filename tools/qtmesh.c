@@ -183,6 +183,12 @@ cellpath(char *path, int level, uint64_t ix, uint64_t iy)
 	return path;
 }
 
+/* The ancestors of the leaf before, which are in the set. */
+static struct {
+	uint64_t	x, y;
+	int		ok;
+} lastanc[GRID + 1];
+
 /* A kept leaf, into the set with the ancestors it does not have yet. */
 static void
 addleaf(const struct qtrec *rec)
@@ -201,9 +207,16 @@ addleaf(const struct qtrec *rec)
 	l->lineno = rec->lineno;
 	l->hang = l->bnd = l->nel = 0;
 	cellset_put(set, c->level, x, y, c->class);
+	/* in preorder the leaf before most often has the same parent */
 	for (level = c->level - 1; level >= 0; level--) {
 		x >>= 1;
 		y >>= 1;
+		if (lastanc[level].ok && lastanc[level].x == x &&
+		    lastanc[level].y == y)
+			break;
+		lastanc[level].ok = 1;
+		lastanc[level].x = x;
+		lastanc[level].y = y;
 		if (cellset_get(set, level, x, y) >= 0)
 			break;
 		cellset_put(set, level, x, y, 0);
@@ -240,10 +253,28 @@ unbalanced(const struct leaf *l, int k)
 	    cellpath(path, l->level, l->ix, l->iy), sidename[k]);
 }
 
+/*
+ * Is cell (level, x, y) a kept leaf a few places from leaf i in preorder?
+ * A sibling that is a leaf is, and then the set is not asked.
+ */
+static int
+nearby(size_t i, int level, uint64_t x, uint64_t y)
+{
+	size_t j, lo = i > 3 ? i - 3 : 0, hi = i + 3 < nleaves ? i + 3 :
+	    nleaves - 1;
+
+	for (j = lo; j <= hi; j++)
+		if (leaves[j].level == level && leaves[j].ix == x &&
+		    leaves[j].iy == y)
+			return 1;
+	return 0;
+}
+
 /* What lies across each side of a leaf: hanging midpoints and boundary. */
 static void
-sides(struct leaf *l)
+sides(size_t i)
 {
+	struct leaf *l = &leaves[i];
 	uint64_t nx, ny, cx, cy;
 	int k, h, c, a, level = l->level;
 
@@ -253,6 +284,8 @@ sides(struct leaf *l)
 			l->bnd |= 3 << 2 * k;
 			continue;
 		}
+		if (nearby(i, level, nx, ny))
+			continue;
 		c = cellset_get(set, level, nx, ny);
 		if (c > 0)
 			continue;
@@ -988,7 +1021,7 @@ main(int argc, char *argv[])
 	qt_close(r);
 
 	for (i = 0; i < nleaves; i++)
-		sides(&leaves[i]);
+		sides(i);
 	cellset_free(set);
 	vt = corners_new();
 	for (i = 0; i < nleaves; i++)
