@@ -89,6 +89,7 @@ struct cellset *cellset_new(void);
 void	 cellset_free(struct cellset *);
 size_t	 cellset_count(const struct cellset *);
 void	 cellset_put(struct cellset *, int, uint64_t, uint64_t, char);
+void	 cellset_reserve(struct cellset *, size_t);
 int	 cellset_get(const struct cellset *, int, uint64_t, uint64_t);
 int	 cellset_above(const struct cellset *, int, uint64_t, uint64_t);
 int	 cellnext(int, uint64_t, uint64_t, int, int, uint64_t *, uint64_t *);

@@ -189,14 +189,11 @@ static struct {
 	int		ok;
 } lastanc[GRID + 1];
 
-/* A kept leaf, into the set with the ancestors it does not have yet. */
 static void
 addleaf(const struct qtrec *rec)
 {
 	const struct cell *c = &rec->c;
 	struct leaf *l;
-	uint64_t x = c->ix, y = c->iy;
-	int level;
 
 	leaves = grow(leaves, &leafcap, nleaves, sizeof(*leaves));
 	l = &leaves[nleaves++];
@@ -206,9 +203,18 @@ addleaf(const struct qtrec *rec)
 	l->class = c->class;
 	l->lineno = rec->lineno;
 	l->hang = l->bnd = l->nel = 0;
-	cellset_put(set, c->level, x, y, c->class);
+}
+
+/* A kept leaf, into the set with the ancestors it does not have yet. */
+static void
+setleaf(const struct leaf *l)
+{
+	uint64_t x = l->ix, y = l->iy;
+	int level;
+
+	cellset_put(set, l->level, x, y, l->class);
 	/* in preorder the leaf before most often has the same parent */
-	for (level = c->level - 1; level >= 0; level--) {
+	for (level = l->level - 1; level >= 0; level--) {
 		x >>= 1;
 		y >>= 1;
 		if (lastanc[level].ok && lastanc[level].x == x &&
@@ -984,7 +990,6 @@ main(int argc, char *argv[])
 	head = format == QTREE;
 	if (head)
 		qt_header();
-	set = cellset_new();
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
 		case QT_UNIVERSE:
@@ -1020,6 +1025,11 @@ main(int argc, char *argv[])
 	}
 	qt_close(r);
 
+	/* the leaves and about a third as many nodes, the set sized once */
+	set = cellset_new();
+	cellset_reserve(set, nleaves + nleaves / 2);
+	for (i = 0; i < nleaves; i++)
+		setleaf(&leaves[i]);
 	for (i = 0; i < nleaves; i++)
 		sides(i);
 	cellset_free(set);
