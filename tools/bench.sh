@@ -1,6 +1,7 @@
 #!/bin/sh
 # bench.sh: time polyread and qtsplit on generated polygons, and qtleaves,
-# qtstats and qt2svg on the largest level-16 stream, print a table and the
+# qtstats and qt2svg on the largest level-16 stream, qtmesh on a balanced
+# level-16 tree (elements/s in the cells_per_s column), print a table and the
 # targets of issue 3 with their figures, and draw samples/bench.svg.
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
@@ -294,6 +295,25 @@ if [ -n "$big" ]; then
 	rm -f "$tmp/big.qt"
 fi
 
+# qtmesh on a balanced level-16 tree: uniform at level 15 with its partial
+# cells split once more, below the level-5 cell of the amoeba's tenth
+# partial leaf (qtsplit -r), about 10^6 elements; until qtbalance exists,
+# a tree whose leaves span two levels is the balanced input at hand.
+if [ -x ./qtmesh ]; then
+	./polyread samples/amoeba.brep >"$tmp/amoeba.qt"
+	p=$(./qtsplit -l 5 "$tmp/amoeba.qt" |
+	    awk '$1 == "leaf" && $9 == "P" && ++n == 10 { print $2 }')
+	./qtsplit -m 15 -l 16 -r "$p" "$tmp/amoeba.qt" >"$tmp/mesh16.qt"
+	peak ./qtmesh "$tmp/mesh16.qt" >"$tmp/mesh16.out" ||
+		die "qtmesh failed"
+	mem=$(rss)
+	ne=$(grep -c '^elem ' "$tmp/mesh16.out")
+	rm -f "$tmp/mesh16.out"
+	t=$(timeit 3 "./qtmesh $tmp/mesh16.qt")
+	row amoeba - 16 qtmesh "$ne" "$t" "$mem"
+	rm -f "$tmp/mesh16.qt"
+fi
+
 # Instructions a record, a figure that the machine's noise does not move.
 if command -v valgrind >/dev/null 2>&1; then
 	echo
@@ -386,6 +406,14 @@ END {
 		skip(name)
 	else
 		verdict(name, sprintf("%d KB", m), m < 65536 ? "PASS" : "FAIL")
+
+	k = "amoeba - 16 qtmesh"
+	name = "qtmesh, balanced level 16, >= 1 M elements/s"
+	if (has(k))
+		verdict(name, sprintf("%.3g M elem/s", cells[k] / sec[k] / 1e6),
+		    cells[k] / sec[k] >= 1e6 ? "PASS" : "FAIL")
+	else
+		skip(name)
 
 	n = split("qtleaves qtstats qt2svg", tool, " ")
 	for (l = 16; l >= 6; l--)
