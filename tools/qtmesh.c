@@ -1046,9 +1046,11 @@ main(int argc, char *argv[])
 	if (renumber && nv > 0)
 		rcm(nv);
 	if (verbose) {
-		fprintf(stderr, "%s: %zu leaves, %zu vertices, %zu elements, "
-		    "%zu hanging vertices\n", progname, nleaves, nv, nelems,
-		    nhangs);
+		fprintf(stderr, "%s: %zu leaves, %zu vertices, %zu elements",
+		    progname, nleaves, nv, nelems);
+		if (!conform)
+			fprintf(stderr, ", %zu hanging vertices", nhangs);
+		fprintf(stderr, "\n");
 		if (renumber)
 			fprintf(stderr, "%s: bandwidth %lu, %lu before "
 			    "renumbering\n", progname,
