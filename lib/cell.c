@@ -65,6 +65,26 @@ pathprefix(const char *a, int na, const char *b, int nb)
 }
 
 /*
+ * The leaf classes a -c option names, a word of F, E and P in any order,
+ * as a set of CLASSBIT bits; a bad word is a usage error.
+ */
+unsigned
+optclasses(const char *arg)
+{
+	const char *p;
+	unsigned set = 0;
+
+	if (*arg == '\0')
+		die(2, "-c: no classes given (a word of F, E and P)");
+	for (p = arg; *p != '\0'; p++) {
+		if (CLASSBIT(*p) == 0)
+			die(2, "-c: unknown class %c (F, E or P)", *p);
+		set |= CLASSBIT(*p);
+	}
+	return set;
+}
+
+/*
  * The order of two cells in preorder, from their levels and indices alone:
  * < 0 when a comes first, 0 for the same cell, > 0 when b does.  An
  * ancestor comes before its descendants; otherwise the digits where the

@@ -79,6 +79,8 @@ double	 cellcoord(double, double, int, uint64_t);
 int	 pathcell(const char *, int, uint64_t *, uint64_t *);
 int	 pathprefix(const char *, int, const char *, int);
 int	 cellcmp(const struct cell *, const struct cell *);
+unsigned optclasses(const char *);	/* -c: F, E, P as bits 1, 2, 4 */
+#define CLASSBIT(c)	((c) == 'F' ? 1u : (c) == 'E' ? 2u : (c) == 'P' ? 4u : 0u)
 
 /*
  * cellset.c: cells in memory by level, column and row, for neighbour
@@ -153,13 +155,24 @@ struct qtrec {
 	struct meshelem	 elem;	/* QT_ELEM */
 };
 
+/*
+ * QT_UNSEALED reads what is left of a stream after lines were removed or
+ * cells reordered (grep, head, sort): the qtree line and end records may
+ * stand anywhere or nowhere, an end record's count is not checked, and
+ * cells may come in any order, even inside a leaf or twice; every record
+ * is still checked by itself, and the head (universe, level, rings) must
+ * still come whole and before the cells.
+ */
 enum {
 	QT_NEEDUNIVERSE = 1,	/* a stream without a universe is an error */
-	QT_VERBOSE = 2		/* progress on stderr, as -v asks */
+	QT_VERBOSE = 2,		/* progress on stderr, as -v asks */
+	QT_UNSEALED = 4		/* no seal: see above */
 };
 
 struct qtreader *qt_open(FILE *, const char *, int);
+struct qtreader *qt_openpath(const char *, int);	/* "-": stdin */
 enum qtkind qt_read(struct qtreader *, struct qtrec *);
+const char *qt_name(const struct qtreader *);
 void	 qt_fail(const struct qtreader *, const char *, ...);
 void	 qt_close(struct qtreader *);
 
@@ -169,6 +182,7 @@ void	 qt_close(struct qtreader *);
  */
 void	 qt_header(void);
 void	 qt_universe(const struct universe *);
+void	 qt_setuniverse(const struct universe *);
 void	 qt_level(int);
 void	 qt_ring(const struct ring *);
 void	 qt_cell(const struct cell *, unsigned long long);

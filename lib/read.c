@@ -70,9 +70,21 @@ qt_open(FILE *fp, const char *name, int flags)
 	r->name = name;
 	r->flags = flags;
 	r->deepest = -1;
+	if (flags & QT_UNSEALED)
+		r->state = IN_BODY;	/* the qtree line may come anywhere */
 	r->cap = 1 << 18;
 	r->buf = xmalloc(r->cap);
 	return r;
+}
+
+/* Opens an operand as a stream, "-" the standard input. */
+struct qtreader *
+qt_openpath(const char *path, int flags)
+{
+	const char *name;
+	FILE *fp = openin(path, &name);
+
+	return qt_open(fp, name, flags);
 }
 
 void
@@ -85,6 +97,12 @@ qt_close(struct qtreader *r)
 	free(r->ringtext.s);
 	free(r->type);
 	free(r);
+}
+
+const char *
+qt_name(const struct qtreader *r)
+{
+	return r->name;
 }
 
 void
@@ -278,7 +296,8 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 	if (pathcell(path, level, &ix, &iy) < 0)
 		qt_fail(r, "path %s does not fit level %d", path, level);
 	k = level > 0 ? pathprefix(path, level, r->path, r->pathlen) : 0;
-	switch (cellorder(r, level > 0 ? path : "", level, k)) {
+	switch (r->flags & QT_UNSEALED ? FOLLOWS :
+	    cellorder(r, level > 0 ? path : "", level, k)) {
 	case INLEAF:
 		qt_fail(r, "cell %s lies inside leaf %s", path,
 		    r->pathlen > 0 ? r->path : ".");
@@ -360,7 +379,8 @@ fastpath(struct qtreader *r, const char **pp, const char *end, uint64_t *ix,
 		r->pathix[j + 1] = r->pathix[j] << 1 | (d & 1);
 		r->pathiy[j + 1] = r->pathiy[j] << 1 | d >> 1;
 	}
-	if (j == 0 || p[j] != ' ' || cellorder(r, p, j, k) != FOLLOWS)
+	if (j == 0 || p[j] != ' ' || (!(r->flags & QT_UNSEALED) &&
+	    cellorder(r, p, j, k) != FOLLOWS))
 		return -1;
 	*pp = p + j + 1;
 	*ix = r->pathix[j];
@@ -679,6 +699,16 @@ tagkind(const char *line, size_t taglen)
 }
 
 static void
+header(struct qtreader *r, const char *line)
+{
+	if (strncmp(line, "qtree ", 6) != 0)
+		qt_fail(r, "not a qtree stream (no qtree header)");
+	if (strcmp(line + 6, "1") != 0)
+		qt_fail(r, "unsupported qtree version: %s", line + 6);
+	r->state = IN_BODY;
+}
+
+static void
 endrec(struct qtreader *r, const char *line)
 {
 	const char *end;
@@ -687,6 +717,8 @@ endrec(struct qtreader *r, const char *line)
 	if (strncmp(line, "end ", 4) != 0 ||
 	    parselong(line + 4, &end, &count) < 0 || *end != '\0')
 		qt_fail(r, "malformed end record");
+	if (r->flags & QT_UNSEALED)
+		return;		/* an end record anywhere, counting anything */
 	if (count < 0 || (unsigned long long)count != r->count)
 		qt_fail(r, "end record counts %lld records, the stream "
 		    "has %llu", count, r->count);
@@ -711,8 +743,12 @@ body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 		endrec(r, line);
 		return QT_EOF;
 	}
-	if (taglen == 5 && strncmp(line, "qtree", 5) == 0)
-		qt_fail(r, "qtree header inside the stream");
+	if (taglen == 5 && strncmp(line, "qtree", 5) == 0) {
+		if (!(r->flags & QT_UNSEALED))
+			qt_fail(r, "qtree header inside the stream");
+		header(r, line);	/* anywhere, but of version 1 */
+		return 0;
+	}
 	if (taglen == 0)
 		qt_fail(r, "record without a tag");
 	r->count++;
@@ -815,23 +851,16 @@ readline(struct qtreader *r, size_t *len)
 	}
 }
 
-static void
-header(struct qtreader *r, const char *line)
-{
-	if (strncmp(line, "qtree ", 6) != 0)
-		qt_fail(r, "not a qtree stream (no qtree header)");
-	if (strcmp(line + 6, "1") != 0)
-		qt_fail(r, "unsupported qtree version: %s", line + 6);
-	r->state = IN_BODY;
-}
-
 /* At the end of the input: it must have ended the stream. */
 static void
 atend(struct qtreader *r)
 {
-	if (r->state == BEFORE_HEADER)
+	if (r->state == BEFORE_HEADER || r->lineno == 0)
 		qt_fail(r, "empty input: not a qtree stream");
-	if (r->state != AFTER_END)
+	if (r->vleft > 0 && (r->flags & QT_UNSEALED))
+		qt_fail(r, "ring %ld is missing %zu of its v records",
+		    r->nrings, r->vleft);
+	if (r->state != AFTER_END && !(r->flags & QT_UNSEALED))
 		qt_fail(r, "truncated stream: no end record");
 	if ((r->flags & QT_NEEDUNIVERSE) && !r->haveuniverse)
 		qt_fail(r, "no universe record");

@@ -84,7 +84,6 @@ void
 qt_universe(const struct universe *u)
 {
 	char *p = room(128);
-	int a, i;
 
 	memcpy(p, "universe ", 9);
 	p = fmtreal(p + 9, u->x0);
@@ -94,6 +93,18 @@ qt_universe(const struct universe *u)
 	p = fmtreal(p, u->size);
 	*p++ = '\n';
 	recorded(p);
+	qt_setuniverse(u);
+}
+
+/*
+ * The universe of the cells and vertices to come, without its record: for
+ * a program that writes the universe record as read, with qt_echo.
+ */
+void
+qt_setuniverse(const struct universe *u)
+{
+	int a, i;
+
 	celltext_init(&w.cell, u);
 	for (a = 0; a < 2; a++)
 		for (i = 0; i < NTEXT; i++)

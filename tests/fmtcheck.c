@@ -24,18 +24,8 @@
 #include "qtree.h"
 
 static unsigned long passed, failed;
-static uint64_t rngstate;
 
-/* splitmix64: a full-period 64-bit generator, enough to spread the tests. */
-static uint64_t
-rnd(void)
-{
-	uint64_t z = (rngstate += 0x9e3779b97f4a7c15);
-
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111eb;
-	return z ^ (z >> 31);
-}
+#include "splitmix.h"
 
 /* A uniform integer in 0..n (inclusive), n < 2^63. */
 static uint64_t

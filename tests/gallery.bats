@@ -30,6 +30,20 @@ load test_helper
 	awk 'BEGIN { exit !(4060 / 65536 == 0.06195068359375) }'
 }
 
+@test "the README's table of figures at every level is qtstats -l's" {
+	# the figures themselves are checked in qtstats.bats, level by level,
+	# against qtsplit -l K's trees
+	sed -n '/^    #   K  leaves_F/,/^$/p' "$TOP/README" | sed '1d;$d' |
+	    sed 's/^    //' > readme.txt
+	[ "$(wc -l < readme.txt)" -eq 13 ]
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 12 | qtstats -l |
+	    awk '$1 == "cut" { printf "%5d %7d %7d %7d  %-18s %-18s %.3g\n",
+		$2, $3, $4, $5, $6, $7, $8 }' > got
+	diff -u readme.txt got
+	# the polygon's area lies between the two areas at every level
+	awk '!($5 <= 65.505 && 65.505 <= $6) { bad = 1 } END { exit bad }' got
+}
+
 @test "recipe: the area of the full leaves agrees with qtstats's exact sum" {
 	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 |
 	    awk '\''$1 == "leaf" && $9 == "F" { a += $8 * $8 } END { print a }'\'

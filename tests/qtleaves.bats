@@ -78,12 +78,15 @@ amoeba() {
 }
 
 @test "-c refuses letters other than F, E and P, and an empty list" {
-	run -2 --separate-stderr qtleaves -c FX /dev/null
-	[ "$stderr" = "qtleaves: -c: unknown class X (F, E or P)" ]
-	run -2 --separate-stderr qtleaves -c '' /dev/null
-	[ "$stderr" = "qtleaves: -c: no classes given (a string of F, E and P)" ]
+	# one rule, and one wording, for -c in every program that has it
+	for p in qtleaves qt2svg; do
+		run -2 --separate-stderr $p -c FX /dev/null
+		[ "$stderr" = "$p: -c: unknown class X (F, E or P)" ]
+		run -2 --separate-stderr $p -c '' /dev/null
+		[ "$stderr" = "$p: -c: no classes given (a word of F, E and P)" ]
+	done
 	run -2 --separate-stderr qtleaves -x
-	[ "${stderr##*$'\n'}" = "usage: qtleaves [-nv] [-c classes] [file]" ]
+	[ "${stderr##*$'\n'}" = "usage: qtleaves [-nv] [-c classes] [-f format] [file]" ]
 	run -2 --separate-stderr qtleaves a b
 }
 
@@ -268,4 +271,67 @@ amoeba() {
 	# the same area from the tree directly
 	[ "$output" = "$(polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 |
 	    awk '$1 == "leaf" && $9 == "F" { a += $8 * $8 } END { print a }')" ]
+}
+
+@test "-f geojson: the inverted L's leaves as features, by hand" {
+	# three unit squares, counter-clockwise from the lower left, closed
+	polyread "$FIXTURES/invl.xy" | qtsplit -l 3 | qtleaves -f geojson > got
+	cat > want <<-'EOF'
+	{"type":"FeatureCollection","features":[
+	{"type":"Feature","properties":{"path":"0","level":1,"class":"F","id":1},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,1],[0,0]]]}},
+	{"type":"Feature","properties":{"path":"1","level":1,"class":"F","id":2},"geometry":{"type":"Polygon","coordinates":[[[1,0],[2,0],[2,1],[1,1],[1,0]]]}},
+	{"type":"Feature","properties":{"path":"2","level":1,"class":"F","id":3},"geometry":{"type":"Polygon","coordinates":[[[0,1],[1,1],[1,2],[0,2],[0,1]]]}}
+	]}
+	EOF
+	diff -u want got
+}
+
+@test "-f wkt: a line a leaf, tab-separated, by hand" {
+	polyread "$FIXTURES/invl.xy" | qtsplit -l 3 | qtleaves -c FEP -f wkt > got
+	printf '%s\t%s\t%s\t%s\t%s\n' \
+	    0 1 F 1 'POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))' \
+	    1 1 F 2 'POLYGON ((1 0, 2 0, 2 1, 1 1, 1 0))' \
+	    2 1 F 3 'POLYGON ((0 1, 1 1, 1 2, 0 2, 0 1))' \
+	    3 1 E 4 'POLYGON ((1 1, 2 1, 2 2, 1 2, 1 1))' > want
+	diff -u want got
+}
+
+@test "-f wkt: the squares' areas add up to qtstats's area_full_partial" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 7 > t.qt
+	qtleaves -f wkt t.qt > w.tsv
+	# the shoelace formula over each POLYGON's five points, in awk
+	got=$(awk -F '\t' '{ s = $5; gsub(/POLYGON \(\(|\)\)/, "", s)
+	    n = split(s, p, ", "); a = 0
+	    for (i = 1; i < n; i++) { split(p[i], u, " "); split(p[i + 1], v, " ")
+		a += u[1] * v[2] - v[1] * u[2] }
+	    t += a / 2 } END { printf "%.12g\n", t }' w.tsv)
+	want=$(qtstats t.qt | awk '$1 == "area_full_partial" { printf "%.12g\n", $2 }')
+	[ "$got" = "$want" ]
+	[ "$(wc -l < w.tsv)" -eq "$(grep -c '^leaf .* [FP]$' t.qt)" ]
+}
+
+@test "-f geojson and -f wkt read back in GDAL with every kept leaf" {
+	command -v ogrinfo >/dev/null || skip "ogrinfo (Debian gdal-bin) not installed"
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 > t.qt
+	n=$(grep -c '^leaf .* [FP]$' t.qt)
+	qtleaves -f geojson t.qt > leaves.geojson
+	run -0 ogrinfo -so leaves.geojson leaves
+	[[ "$output" == *"Geometry: Polygon"* ]]
+	[[ "$output" == *"Feature Count: $n"* ]]
+	qtleaves -f wkt t.qt > leaves.tsv
+	run -0 ogrinfo -so -oo HEADERS=NO -oo GEOM_POSSIBLE_NAMES=field_5 \
+	    leaves.tsv leaves
+	[[ "$output" == *"Feature Count: $n"* ]]
+	[[ "$output" == *"Geometry Column = field_5"* ]]
+}
+
+@test "-f: a defective input leaves the GeoJSON open; -n and a bad format are usage errors" {
+	polyread "$FIXTURES/invl.xy" | qtsplit -l 3 | sed '$d' > cut.qt
+	run -1 --separate-stderr qtleaves -f geojson cut.qt
+	[[ "$stderr" == "qtleaves: cut.qt:"*": truncated stream: no end record" ]]
+	[[ "$output" != *']}' ]]
+	run -2 --separate-stderr qtleaves -n -f wkt cut.qt
+	[ "$stderr" = "qtleaves: -n: a mesh is written in the qtree format only" ]
+	run -2 --separate-stderr qtleaves -f shp cut.qt
+	[ "$stderr" = "qtleaves: -f: unknown format shp (qtree, geojson, wkt)" ]
 }

@@ -113,7 +113,9 @@ value() {
 
 @test "the inverted L and its mesh: every figure and the -l table by hand" {
 	# three full unit squares at (0.5, 0.5), (1.5, 0.5), (0.5, 1.5):
-	# centroid 2.5/3 = 5/6; their 8 distinct corners, none hanging
+	# centroid 2.5/3 = 5/6; their 8 distinct corners, none hanging;
+	# elements 1 2 3 4, 2 5 6 3 and 4 3 7 8 (qtleaves.bats): bandwidth 5;
+	# cut at level 0, a stream of leaves alone has no cell: area 0, error 1
 	cat > want <<-'EOF'
 	rings 1
 	holes 0
@@ -143,9 +145,15 @@ value() {
 	elements 3
 	elements_quad 3
 	hanging_vertices 0
+	bandwidth 5
+	smallest_angle 90
+	largest_aspect_ratio 1
 	# level cells nodes leaves leaves_F leaves_E leaves_P
 	level 0 0 0 0 0 0 0
 	level 1 3 0 3 3 0 0
+	# cut level leaves_F leaves_E leaves_P area_full area_full_partial area_full_relerr area_full_partial_relerr centroid_full_x centroid_full_y centroid_full_partial_x centroid_full_partial_y
+	cut 0 0 0 0 0 0 1 1 - - - -
+	cut 1 3 0 0 3 3 0 0 0.8333333333333334 0.8333333333333334 0.8333333333333334 0.8333333333333334
 	EOF
 	polyread "$FIXTURES/invl.xy" | qtsplit -l 5 | qtleaves -n | qtstats -l > got
 	diff -u want got
@@ -198,7 +206,8 @@ value() {
 	elements_quad 7
 	hanging_vertices 2
 	EOF
-	polyread -l 2 tri.xy | qtsplit | qtleaves -n | qtstats | tail -4 > got
+	polyread -l 2 tri.xy | qtsplit | qtleaves -n | qtstats |
+	    grep -E '^(vertices|elements|hanging)' > got
 	diff -u want got
 	cat > want <<-'EOF'
 	vertices 19
@@ -206,7 +215,8 @@ value() {
 	elements_quad 10
 	hanging_vertices 4
 	EOF
-	polyread -l 2 tri.xy | qtsplit | qtleaves -n -c FPE | qtstats | tail -4 > got
+	polyread -l 2 tri.xy | qtsplit | qtleaves -n -c FPE | qtstats |
+	    grep -E '^(vertices|elements|hanging)' > got
 	diff -u want got
 }
 
@@ -254,7 +264,7 @@ value() {
 	elements_tri 2
 	hanging_vertices 1
 	EOF
-	qtstats tri.qt | tail -5 > got
+	qtstats tri.qt | grep -E '^(vertices|elements|hanging)' > got
 	diff -u want got
 }
 
@@ -416,7 +426,7 @@ value() {
 			    l[i], k[i, "F"], k[i, "E"], k[i, "P"]
 	    }' t.qt > want
 	[ "$(grep -c '^level' want)" = 9 ]
-	grep -E '^(#|level)' s > got
+	grep -E '^(# level|level)' s > got
 	diff -u want got
 }
 
@@ -449,6 +459,42 @@ value() {
 	[ "$(value deepest_level s)" = 33 ]
 	awk '$1 == "uniform_cells" { ok = $2 == 2 ^ 66 && $2 ~ /e\+/ }
 	    END { exit !ok }' s
+}
+
+@test "-l: the tree cut at each level has the figures of the tree built to it" {
+	# the level-9 tree cut at level K is qtsplit -l K's tree: each cut
+	# line must give the keys of that second, independent run
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 9 a.qt | qtstats -l | awk '$1 == "cut"' > cuts
+	[ "$(wc -l < cuts)" -eq 10 ]
+	for k in 0 1 2 3 4 5 6 7 8 9; do
+		qtsplit -l $k a.qt | qtstats > s
+		awk -v k=$k '$2 == k { print "leaves_F", $3; print "leaves_E", $4
+		    print "leaves_P", $5; print "area_full", $6
+		    print "area_full_partial", $7; print "area_full_relerr", $8
+		    print "area_full_partial_relerr", $9
+		    if ($10 != "-") { print "centroid_full_x", $10
+			print "centroid_full_y", $11 }
+		    print "centroid_full_partial_x", $12
+		    print "centroid_full_partial_y", $13 }' cuts > got
+		grep -E '^(leaves_[FEP]|area_full|centroid_full)' s > want
+		diff -u want got
+	done
+}
+
+@test "a mesh's quality: bandwidth, smallest angle and aspect ratio by hand" {
+	# the triangle's level-2 mesh: 7 quads, whose vertex numbers differ by
+	# at most 11 (elem 6: vertices 11 3 14 12); squares: 90 degrees, 1
+	printf '0 0\n2 0\n0 2\n' | polyread -l 2 | qtsplit | qtleaves -n |
+	    qtstats | grep -E '^(bandwidth|smallest|largest)' > got
+	printf 'bandwidth 11\nsmallest_angle 90\nlargest_aspect_ratio 1\n' > want
+	diff -u want got
+	# one right triangle (0,0) (1,0) (1,1): 2, 45 degrees, sqrt(2)
+	printf 'qtree 1\nuniverse 0 0 2\nvertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 tri 1 2 3\nend 5\n' |
+	    qtstats | grep -E '^(bandwidth|smallest|largest)' > got
+	awk 'BEGIN { printf "bandwidth 2\nsmallest_angle 45\n"
+	    printf "largest_aspect_ratio %.17g\n", sqrt(2) }' > want
+	diff -u want got
 }
 
 @test "mesh records are read by one rule in every reader" {

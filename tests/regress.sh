@@ -23,12 +23,16 @@ saved=tests/regress
 save=0
 [ "${1:-}" = -s ] && save=1
 
-for p in polyread qtsplit qtleaves qtstats qt2svg qtmesh; do
+for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh; do
 	[ -x "./$p" ] || { echo "regress: build first (make)" >&2; exit 2; }
 done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/regress.XXXXXX") || exit 2
 trap 'rm -rf "$tmp"' 0
 trap 'exit 2' HUP INT TERM
+
+# qtcat's case of shards: the level-6 tree of a polygon cut at level 1, the
+# four quadrants' subtrees and the root's stream joined again.
+shards='sh tests/regress/shards.sh'
 
 # Every case: NAME COMMAND...; the command sees $T (a level-6 tree of the
 # input), $I (the input) and $W (a scratch directory).
@@ -48,6 +52,8 @@ cases() {
 		echo "$b.qtleaves|polyread $f | qtsplit -l 6 | qtleaves"
 		echo "$b.qtleaves-cE|polyread $f | qtsplit -l 6 | qtleaves -c E"
 		echo "$b.qtleaves-n|polyread $f | qtsplit -l 5 | qtleaves -n -c FEP"
+		echo "$b.qtleaves-geojson|polyread $f | qtsplit -l 5 | qtleaves -f geojson"
+		echo "$b.qtleaves-wkt|polyread $f | qtsplit -l 5 | qtleaves -c FEP -f wkt"
 		echo "$b.qtleaves-v|polyread $f | qtsplit -l 6 | qtleaves -v 2>&1 >/dev/null"
 		echo "$b.qtstats|polyread $f | qtsplit -l 6 | qtstats -l"
 		echo "$b.qtstats-mesh|polyread $f | qtsplit -l 5 | qtleaves -n | qtstats"
@@ -64,6 +70,9 @@ cases() {
 		echo "$b.qtmesh-vtk|polyread $f | qtsplit -m 3 -l 4 | qtmesh -f vtk"
 		echo "$b.qtmesh-triangle|w=\$(mktemp -d) && polyread $f | qtsplit -m 3 -l 4 | qtmesh -f triangle -o \$w/t && cat \$w/t.node \$w/t.ele; rm -rf \$w"
 		echo "$b.qtmesh-unbalanced|polyread $f | qtsplit -l 6 | qtmesh -v"
+		echo "$b.qtcat|polyread $f | qtsplit -l 6 | qtcat"
+		echo "$b.qtcat-u|polyread $f | qtsplit -l 6 | grep -v ' E\$' | qtcat -u"
+		echo "$b.qtcat-shards|$shards $f"
 	done
 	# The readers' long way: numbers spelled otherwise than the writers do.
 	echo "odd.qtleaves|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtleaves -n -c FEP"
@@ -87,7 +96,7 @@ cases() {
 		case $b in
 		EXPECT) ;;
 		*.qt)
-			for p in qtsplit qtleaves qtstats qt2svg; do
+			for p in qtsplit qtleaves qtstats qt2svg qtcat; do
 				echo "bad-$b.$p|$p $f"
 			done ;;
 		*)	echo "bad-$b.polyread|polyread $f" ;;

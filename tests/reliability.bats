@@ -6,7 +6,7 @@ load test_helper
 
 # The filters that read qtree(5) streams and exist in this build.
 qtree_readers() {
-	for p in qtsplit qtleaves qtstats qt2svg; do
+	for p in qtsplit qtleaves qtstats qt2svg qtcat; do
 		[ -x "$TOP/$p" ] && echo "$p"
 	done
 }

@@ -1,8 +1,10 @@
 #!/bin/sh
 # bench.sh: time polyread and qtsplit on generated polygons, and qtleaves,
-# qtstats and qt2svg on the largest level-16 stream, qtmesh on a balanced
-# level-16 tree (elements/s in the cells_per_s column), print a table and the
-# targets of issue 3 with their figures, and draw samples/bench.svg.
+# qtstats and qt2svg on the largest level-16 stream, qtcat merging two
+# shards of it against cat | wc -l, and qtmesh on a balanced level-16 tree
+# (elements/s in the cells_per_s column), print a table and the targets of
+# issue 3 (and 17's of qtcat, 10's of qtmesh) with their figures, and draw
+# samples/bench.svg.
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
@@ -255,6 +257,30 @@ reader() {
 	row star "$2" "$3" "$1" "$5" "$t" -
 }
 
+# catmerge LEVEL: qtcat merging two shards of the big stream, the root's
+# halves (its cells under quadrants 0 and 1, and under 2 and 3, each shard
+# with the root node), against `cat | wc -l` on the same two files: the
+# ratio of their line rates, kept in $tmp/catmerge for the targets.
+catmerge() {
+	[ -x ./qtcat ] || return 0
+	for h in 01 23; do
+		awk -v h=$h '$1 == "end" { print "end", n; next }
+		    $1 != "node" && $1 != "leaf" || $2 == "." ||
+		    index(h, substr($2, 1, 1)) { print; if ($1 != "qtree") n++ }' \
+		    "$tmp/big.qt" >"$tmp/half$h.qt"
+	done
+	./qtcat "$tmp/half01.qt" "$tmp/half23.qt" | cmp -s - "$tmp/big.qt" ||
+		die "qtcat does not join the two halves into the whole"
+	t=$(timeit "$runs" "./qtcat $tmp/half01.qt $tmp/half23.qt")
+	tc=$(timeit "$runs" "cat $tmp/half01.qt $tmp/half23.qt | wc -l")
+	lines=$(cat "$tmp/half01.qt" "$tmp/half23.qt" | wc -l)
+	echo "# qtcat: two shards of star N=1000 level $1, $lines lines:" \
+	    "$t s; cat | wc -l: $tc s"
+	awk -v t="$t" -v c="$tc" -v l="$1" \
+	    'BEGIN { printf "%s %.2f\n", l, c / t }' >"$tmp/catmerge"
+	rm -f "$tmp/half01.qt" "$tmp/half23.qt"
+}
+
 echo "# qtree benchmark, $(date -u '+%Y-%m-%d %H:%M UTC'), $(uname -sm)," \
     "$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo '?') CPUs"
 echo "# timer: $timer; runs per figure: $runs under 1 s, else" \
@@ -292,6 +318,7 @@ if [ -n "$big" ]; then
 	for tool in qtleaves qtstats qt2svg; do
 		reader "$tool" 1000 "$1" "$tmp/big.qt" "$2"
 	done
+	catmerge "$1"
 	rm -f "$tmp/big.qt"
 fi
 
@@ -433,6 +460,14 @@ END {
 	}
 }
 EOF
+
+if [ -s "$tmp/catmerge" ]; then
+	read -r l ratio <"$tmp/catmerge"
+	printf '%-58s %-22s %s\n' \
+	    "qtcat merges 2 shards (level $l) >= 0.5 x cat | wc -l" \
+	    "$ratio x lines/s" \
+	    "$(awk -v r="$ratio" 'BEGIN { print r >= 0.5 ? "PASS" : "FAIL" }')"
+fi
 
 if [ -n "$svg" ]; then
 	note="sh tools/bench.sh, $(date -u '+%Y-%m-%d'), $(uname -m),"

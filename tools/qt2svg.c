@@ -38,6 +38,10 @@ static const char *classname[NCLASS] = { "full", "empty", "partial" };
 /* Okabe and Ito's palette: blue, sky blue, orange. */
 static const char *classcolour[NCLASS] = { "#0072B2", "#56B4E9", "#E69F00" };
 
+/* Ring styles, which the legend repeats. */
+static const char ringstyle[] = "stroke=\"#000000\" stroke-width=\"1.5\"";
+static const char holestyle[] = "stroke-dasharray=\"5 3\"";
+
 struct buf {
 	char	*p;
 	size_t	 len, cap;
@@ -47,40 +51,52 @@ struct vertex {
 	long long	 x, y;		/* hundredths of a pixel */
 };
 
-struct elem {
-	size_t		 first, nv;	/* into elemverts */
+/* What the options ask for. */
+static struct options {
+	int	width, margin;	/* pixels */
+	int	drawn[NCLASS];	/* the leaf classes -c draws */
+	int	nflag, Nflag;	/* element numbers, vertex numbers */
+} opt = { .width = 800, .margin = 10 };
+
+/* The leaves, by class, and their element numbers. */
+struct leaflayer {
+	struct buf	 path[NCLASS];
+	unsigned long long n[NCLASS];
+	int		 deepest;	/* the smallest leaf's level */
+	struct buf	 labels;
+	unsigned long long nlabels;
 };
 
-static int width = 800, margin = 10, nflag, Nflag;
-static int drawn[NCLASS];
-static struct universe u;
-static double scale;		/* pixels per world unit */
+/*
+ * Outer rings [0] and holes [1].  The ring being drawn goes on, when its
+ * path element is full, from its last vertex in the next one.
+ */
+struct ringlayer {
+	struct buf	 path[2];
+	long		 n[2];
+	size_t		 pathverts[2];	/* in the last path element */
+	int		 kind;		/* of the ring being drawn */
+	long long	 lastx, lasty;
+};
 
-static struct buf leaves[NCLASS];
-static unsigned long long nleaves[NCLASS];
-static double finest = -1;	/* side of the smallest thing drawn, pixels */
-static int deepestleaf = -1;	/* the level of the smallest leaf drawn */
+/* The mesh: the vertices as dots, the elements as outlines, numbers. */
+struct meshlayer {
+	struct vertex	*verts;
+	size_t		 nverts, vertcap;
+	struct buf	 dots, vertlabels;
+	size_t		 nelems;
+	struct buf	 path, elemlabels;
+};
 
-/* Ring styles, which the legend repeats. */
-static const char ringstyle[] = "stroke=\"#000000\" stroke-width=\"1.5\"";
-static const char holestyle[] = "stroke-dasharray=\"5 3\"";
-
-static struct buf ringpath[2];	/* outer rings, holes */
-static long nrings[2];
-static size_t ringpathverts[2];
-static int ringkind;
-static long long ringlastx, ringlasty;
-
-static struct vertex *verts;
-static size_t nverts, vertcap;
-static struct buf dots, vertlabels;
-
-static size_t nelems;
-
-static struct buf meshpath, elemlabels;
-
-static struct buf leaflabels;
-static unsigned long long nleaflabels;
+/* The world as the picture places it, and what is drawn on it. */
+static struct picture {
+	struct universe	 u;
+	double		 scale;		/* pixels per world unit */
+	double		 finest;	/* smallest side drawn, pixels */
+	struct leaflayer leaves;
+	struct ringlayer rings;
+	struct meshlayer mesh;
+} pic = { .finest = -1, .leaves.deepest = -1 };
 
 static void
 usage(void)
@@ -159,9 +175,10 @@ struct numtext {
 };
 
 #define NKEPT	8	/* columns or rows kept per level */
-static struct numtext colx[QT_MAXLEVEL + 1][NKEPT];
-static struct numtext rowy[QT_MAXLEVEL + 1][NKEPT];
-static struct numtext side[QT_MAXLEVEL + 1][3][2];	/* two widths a level */
+static struct leveltexts {
+	struct numtext	x[NKEPT], y[NKEPT];	/* by column, by row */
+	struct numtext	side[3][2];	/* h, v, h back: two widths each */
+} kept[QT_MAXLEVEL + 1];
 
 static char *
 putnum(char *p, struct numtext *t, long long v)
@@ -216,21 +233,21 @@ hund(double px)
 static long long
 pixelx(double x)
 {
-	return hund(margin + (x - u.x0) * scale);
+	return hund(opt.margin + (x - pic.u.x0) * pic.scale);
 }
 
 /* The world's y grows upward, the picture's downward. */
 static long long
 pixely(double y)
 {
-	return hund(margin + (u.size - (y - u.y0)) * scale);
+	return hund(opt.margin + (pic.u.size - (y - pic.u.y0)) * pic.scale);
 }
 
 static void
 seefeature(double px)
 {
-	if (finest < 0 || px < finest)
-		finest = px;
+	if (pic.finest < 0 || px < pic.finest)
+		pic.finest = px;
 }
 
 static int
@@ -267,40 +284,42 @@ label(struct buf *b, long long x, long long y, double size, long long id)
 static void
 leaf(const struct cell *c)
 {
+	struct leaflayer *l = &pic.leaves;
+	struct leveltexts *t = &kept[c->level];
 	int k = classindex(c->class);
 	long long x0, x1, y0, y1;
-	struct buf *b = &leaves[k];
+	struct buf *b = &l->path[k];
 	char *p;
 
-	if (!drawn[k])
+	if (!opt.drawn[k])
 		return;
 	x0 = pixelx(c->x);
-	x1 = pixelx(u.x0 + (double)(c->ix + 1) * c->size);
+	x1 = pixelx(pic.u.x0 + (double)(c->ix + 1) * c->size);
 	y0 = pixely(c->y);
-	y1 = pixely(u.y0 + (double)(c->iy + 1) * c->size);
-	if (nleaves[k] > 0 && nleaves[k] % CHUNK == 0)
+	y1 = pixely(pic.u.y0 + (double)(c->iy + 1) * c->size);
+	if (l->n[k] > 0 && l->n[k] % CHUNK == 0)
 		putstr(b, "\"/>\n<path d=\"");
 	/* five numbers, each copied as a whole text, five letters, a space */
 	p = room(b, 5 * sizeof(struct numtext) + 6);
 	*p++ = 'M';
-	p = putnum(p, &colx[c->level][c->ix % NKEPT], x0);
+	p = putnum(p, &t->x[c->ix % NKEPT], x0);
 	*p++ = ' ';
-	p = putnum(p, &rowy[c->level][c->iy % NKEPT], y1);
+	p = putnum(p, &t->y[c->iy % NKEPT], y1);
 	*p++ = 'h';
-	p = putnum(p, &side[c->level][0][(x1 - x0) & 1], x1 - x0);
+	p = putnum(p, &t->side[0][(x1 - x0) & 1], x1 - x0);
 	*p++ = 'v';
-	p = putnum(p, &side[c->level][1][(y0 - y1) & 1], y0 - y1);
+	p = putnum(p, &t->side[1][(y0 - y1) & 1], y0 - y1);
 	*p++ = 'h';
-	p = putnum(p, &side[c->level][2][(x0 - x1) & 1], x0 - x1);
+	p = putnum(p, &t->side[2][(x0 - x1) & 1], x0 - x1);
 	*p++ = 'z';
 	b->len = p - b->p;
-	nleaves[k]++;
-	if (c->level > deepestleaf)
-		deepestleaf = c->level;
-	if (nflag && c->id > 0) {
-		label(&leaflabels, (x0 + x1) / 2, (y0 + y1) / 2,
+	l->n[k]++;
+	if (c->level > l->deepest)
+		l->deepest = c->level;
+	if (opt.nflag && c->id > 0) {
+		label(&l->labels, (x0 + x1) / 2, (y0 + y1) / 2,
 		    (x1 - x0) / 100.0, c->id);
-		nleaflabels++;
+		l->nlabels++;
 	}
 }
 
@@ -311,30 +330,32 @@ leaf(const struct cell *c)
 static void
 ringto(long long x, long long y)
 {
-	struct buf *b = &ringpath[ringkind];
-	size_t *n = &ringpathverts[ringkind];
+	struct ringlayer *rl = &pic.rings;
+	struct buf *b = &rl->path[rl->kind];
+	size_t *n = &rl->pathverts[rl->kind];
 
 	if (*n >= RINGCHUNK) {
 		putstr(b, "\"/>\n<path d=\"M");
-		putxy(b, ringlastx, ringlasty);
+		putxy(b, rl->lastx, rl->lasty);
 		*n = 1;
 	}
 	put(b, " ", 1);
 	putxy(b, x, y);
 	(*n)++;
-	ringlastx = x;
-	ringlasty = y;
+	rl->lastx = x;
+	rl->lasty = y;
 }
 
 static void
 ring(const struct ring *g)
 {
-	struct buf *b = &ringpath[g->hole];
-	size_t *n = &ringpathverts[g->hole], i;
+	struct ringlayer *rl = &pic.rings;
+	struct buf *b = &rl->path[g->hole];
+	size_t *n = &rl->pathverts[g->hole], i;
 	long long x = pixelx(g->v[0].x), y = pixely(g->v[0].y);
 
-	ringkind = g->hole;
-	nrings[ringkind]++;
+	rl->kind = g->hole;
+	rl->n[rl->kind]++;
 	if (*n >= RINGCHUNK) {
 		putstr(b, "\"/>\n<path d=\"");
 		*n = 0;
@@ -342,8 +363,8 @@ ring(const struct ring *g)
 	put(b, "M", 1);
 	putxy(b, x, y);
 	(*n)++;
-	ringlastx = x;
-	ringlasty = y;
+	rl->lastx = x;
+	rl->lasty = y;
 	for (i = 1; i < g->n; i++)
 		ringto(pixelx(g->v[i].x), pixely(g->v[i].y));
 	ringto(x, y);
@@ -352,30 +373,32 @@ ring(const struct ring *g)
 static void
 meshvertex(const struct meshvertex *mv)
 {
+	struct meshlayer *m = &pic.mesh;
 	struct vertex *v;
 	char num[24];
 
-	if (nverts == vertcap) {
-		vertcap = vertcap ? 2 * vertcap : 256;
-		verts = xreallocarray(verts, vertcap, sizeof(*verts));
+	if (m->nverts == m->vertcap) {
+		m->vertcap = m->vertcap ? 2 * m->vertcap : 256;
+		m->verts = xreallocarray(m->verts, m->vertcap,
+		    sizeof(*m->verts));
 	}
-	v = &verts[nverts++];
+	v = &m->verts[m->nverts++];
 	v->x = pixelx(mv->p.x);
 	v->y = pixely(mv->p.y);
-	if (nverts > 1 && (nverts - 1) % CHUNK == 0)
-		putstr(&dots, "\"/>\n<path d=\"");
-	put(&dots, "M", 1);
-	putxy(&dots, v->x, v->y);
-	put(&dots, "h0", 2);
-	if (Nflag) {
+	if (m->nverts > 1 && (m->nverts - 1) % CHUNK == 0)
+		putstr(&m->dots, "\"/>\n<path d=\"");
+	put(&m->dots, "M", 1);
+	putxy(&m->dots, v->x, v->y);
+	put(&m->dots, "h0", 2);
+	if (opt.Nflag) {
 		/* Above and to the right of the dot, clear of its lines. */
-		putstr(&vertlabels, "<text x=\"");
-		puthund(&vertlabels, v->x + 150);
-		putstr(&vertlabels, "\" y=\"");
-		puthund(&vertlabels, v->y - 150);
-		putstr(&vertlabels, "\">");
-		putstr(&vertlabels, (fmtint(num, mv->id), num));
-		putstr(&vertlabels, "</text>\n");
+		putstr(&m->vertlabels, "<text x=\"");
+		puthund(&m->vertlabels, v->x + 150);
+		putstr(&m->vertlabels, "\" y=\"");
+		puthund(&m->vertlabels, v->y - 150);
+		putstr(&m->vertlabels, "\">");
+		putstr(&m->vertlabels, (fmtint(num, mv->id), num));
+		putstr(&m->vertlabels, "</text>\n");
 	}
 }
 
@@ -383,16 +406,17 @@ meshvertex(const struct meshvertex *mv)
 static void
 meshelem(const struct meshelem *e)
 {
-	struct buf *path = &meshpath;
+	struct meshlayer *m = &pic.mesh;
+	struct buf *path = &m->path;
 	long long xmin = 0, xmax = 0, ymin = 0, ymax = 0;
 	long long sx = 0, sy = 0;
 	size_t k;
 
-	if (nelems > 0 && nelems % CHUNK == 0)
+	if (m->nelems > 0 && m->nelems % CHUNK == 0)
 		putstr(path, "\"/>\n<path d=\"");
-	nelems++;
+	m->nelems++;
 	for (k = 0; k < e->n; k++) {
-		const struct vertex *v = &verts[e->v[k] - 1];
+		const struct vertex *v = &m->verts[e->v[k] - 1];
 
 		put(path, k == 0 ? "M" : " ", 1);
 		putxy(path, v->x, v->y);
@@ -410,9 +434,9 @@ meshelem(const struct meshelem *e)
 	put(path, "z", 1);
 	seefeature((xmax - xmin < ymax - ymin ? xmax - xmin : ymax - ymin) /
 	    100.0);
-	if (nflag)
-		label(&elemlabels, sx / (long long)e->n, sy / (long long)e->n,
-		    (xmax - xmin) / 100.0, e->id);
+	if (opt.nflag)
+		label(&m->elemlabels, sx / (long long)e->n,
+		    sy / (long long)e->n, (xmax - xmin) / 100.0, e->id);
 }
 
 static void
@@ -465,16 +489,16 @@ static void
 legendrow(int row, const char *swatch, const char *text, long long count)
 {
 	char num[24];
-	long long top = (long long)(width + ROW * row + 2) * 100;
+	long long top = (long long)(opt.width + ROW * row + 2) * 100;
 
 	fmtint(num, count);
 	outs(swatch);
 	outs(" x=\"");
-	outhund((long long)margin * 100);
+	outhund((long long)opt.margin * 100);
 	outs("\" y=\"");
 	outhund(top);
 	outs("\" width=\"12\" height=\"12\"/>\n<text x=\"");
-	outhund((long long)(margin + 18) * 100);
+	outhund((long long)(opt.margin + 18) * 100);
 	outs("\" y=\"");
 	outhund(top + 1050);
 	outs("\">");
@@ -490,9 +514,9 @@ legendrows(void)
 	int k, n = 0;
 
 	for (k = 0; k < NCLASS; k++)
-		n += drawn[k];
-	return n + (nrings[0] > 0) + (nrings[1] > 0) + (nelems > 0) +
-	    (nverts > 0);
+		n += opt.drawn[k];
+	return n + (pic.rings.n[0] > 0) + (pic.rings.n[1] > 0) +
+	    (pic.mesh.nelems > 0) + (pic.mesh.nverts > 0);
 }
 
 static void
@@ -505,32 +529,32 @@ legend(void)
 		return;
 	outs("<g id=\"legend\" font-family=\"sans-serif\" font-size=\"12\">\n");
 	for (k = 0; k < NCLASS; k++) {
-		if (!drawn[k])
+		if (!opt.drawn[k])
 			continue;
 		snprintf(swatch, sizeof(swatch), "<rect fill=\"%s\" "
 		    "stroke=\"#000000\" stroke-opacity=\"0.35\"",
 		    classcolour[k]);
 		snprintf(text, sizeof(text), "%c %s", classletter[k],
 		    classname[k]);
-		legendrow(row++, swatch, text, nleaves[k]);
+		legendrow(row++, swatch, text, pic.leaves.n[k]);
 	}
 	/* Ring and mesh swatches are squares drawn the way the map draws. */
-	if (nrings[0] > 0) {
+	if (pic.rings.n[0] > 0) {
 		snprintf(swatch, sizeof(swatch), "<rect fill=\"none\" %s",
 		    ringstyle);
-		legendrow(row++, swatch, "outer rings", nrings[0]);
+		legendrow(row++, swatch, "outer rings", pic.rings.n[0]);
 	}
-	if (nrings[1] > 0) {
+	if (pic.rings.n[1] > 0) {
 		snprintf(swatch, sizeof(swatch), "<rect fill=\"none\" %s %s",
 		    ringstyle, holestyle);
-		legendrow(row++, swatch, "holes", nrings[1]);
+		legendrow(row++, swatch, "holes", pic.rings.n[1]);
 	}
-	if (nelems > 0)
+	if (pic.mesh.nelems > 0)
 		legendrow(row++, "<rect fill=\"none\" stroke=\"#000000\"",
-		    "elements", nelems);
-	if (nverts > 0)
+		    "elements", pic.mesh.nelems);
+	if (pic.mesh.nverts > 0)
 		legendrow(row++, "<rect fill=\"#000000\" rx=\"6\"",
-		    "vertices", nverts);
+		    "vertices", pic.mesh.nverts);
 	outs("</g>\n");
 }
 
@@ -542,10 +566,10 @@ svghead(long long height)
 	printf("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
 	    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
 	    "width=\"%d\" height=\"%lld\" viewBox=\"0 0 %d %lld\">\n"
-	    "<title>qtree</title>\n", width, height, width, height);
-	fmtreal(x0, u.x0);
-	fmtreal(y0, u.y0);
-	fmtreal(size, u.size);
+	    "<title>qtree</title>\n", opt.width, height, opt.width, height);
+	fmtreal(x0, pic.u.x0);
+	fmtreal(y0, pic.u.y0);
+	fmtreal(size, pic.u.size);
 	printf("<desc>universe %s %s %s, drawn by qt2svg</desc>\n", x0, y0,
 	    size);
 	outs("<rect width=\"100%\" height=\"100%\" fill=\"#FFFFFF\"/>\n");
@@ -573,43 +597,45 @@ shapes(double f)
 	for (k = 0; k < NCLASS; k++) {
 		snprintf(head, sizeof(head), "<g id=\"leaves-%c\" fill=\"%s\" "
 		    "%s>\n", classletter[k], classcolour[k], outline);
-		outpaths(head, &leaves[k]);
+		outpaths(head, &pic.leaves.path[k]);
 	}
 	snprintf(head, sizeof(head), "<g id=\"elements\" fill=\"none\" "
 	    "stroke=\"#000000\" stroke-width=\"%s\" "
 	    "stroke-linejoin=\"round\">\n", num);
-	outpaths(head, &meshpath);
+	outpaths(head, &pic.mesh.path);
 	snprintf(head, sizeof(head), "<g id=\"outer-rings\" fill=\"none\" %s "
 	    "stroke-linejoin=\"round\">\n", ringstyle);
-	outpaths(head, &ringpath[0]);
+	outpaths(head, &pic.rings.path[0]);
 	snprintf(head, sizeof(head), "<g id=\"holes\" fill=\"none\" %s %s "
 	    "stroke-linejoin=\"round\">\n", ringstyle, holestyle);
-	outpaths(head, &ringpath[1]);
+	outpaths(head, &pic.rings.path[1]);
 	/* A zero-length line with round caps is a dot. */
 	fmthund(num, hund(clamp(f / 5, 0.5, 5)));
 	snprintf(head, sizeof(head), "<g id=\"vertices\" fill=\"none\" "
 	    "stroke=\"#000000\" stroke-width=\"%s\" "
 	    "stroke-linecap=\"round\">\n", num);
-	outpaths(head, &dots);
+	outpaths(head, &pic.mesh.dots);
 }
 
 static void
 numbers(double f)
 {
-	const struct buf *b = nelems > 0 ? &elemlabels : &leaflabels;
+	const struct meshlayer *m = &pic.mesh;
+	const struct buf *b = m->nelems > 0 ? &m->elemlabels :
+	    &pic.leaves.labels;
 
-	if (nflag && b->len > 0) {
+	if (opt.nflag && b->len > 0) {
 		outs("<g id=\"element-numbers\" font-family=\"sans-serif\" "
 		    "text-anchor=\"middle\" fill=\"#000000\">\n");
 		outbuf(b);
 		outs("</g>\n");
 	}
-	if (Nflag && vertlabels.len > 0) {
+	if (opt.Nflag && m->vertlabels.len > 0) {
 		outs("<g id=\"vertex-numbers\" font-family=\"sans-serif\" "
 		    "font-size=\"");
 		outhund(hund(clamp(f / 3, 1, 10)));
 		outs("\" fill=\"#000000\">\n");
-		outbuf(&vertlabels);
+		outbuf(&m->vertlabels);
 		outs("</g>\n");
 	}
 }
@@ -620,33 +646,26 @@ writesvg(void)
 	double f;
 	int rows = legendrows();
 
-	if (deepestleaf >= 0)
-		seefeature(ldexp(u.size, -deepestleaf) * scale);
-	f = finest >= 0 ? finest : width - 2 * margin;
+	if (pic.leaves.deepest >= 0)
+		seefeature(ldexp(pic.u.size, -pic.leaves.deepest) * pic.scale);
+	f = pic.finest >= 0 ? pic.finest : opt.width - 2 * opt.margin;
 
-	svghead(width + (long long)ROW * rows + (rows > 0 ? margin : 0));
+	svghead(opt.width + (long long)ROW * rows +
+	    (rows > 0 ? opt.margin : 0));
 	shapes(f);
 	numbers(f);
 	legend();
 	outs("</svg>\n");
 }
 
+/* The classes to draw, from a set of CLASSBIT bits. */
 static void
-classes(const char *arg)
+setdrawn(unsigned set)
 {
-	const char *p;
 	int k;
 
-	if (*arg == '\0')
-		die(2, "-c: no class given (a word of F, E and P)");
-	for (p = arg; *p != '\0'; p++) {
-		for (k = 0; k < NCLASS; k++)
-			if (*p == classletter[k])
-				break;
-		if (k == NCLASS)
-			die(2, "-c: classes are F, E and P: %s", arg);
-		drawn[k] = 1;
-	}
+	for (k = 0; k < NCLASS; k++)
+		opt.drawn[k] = (set & CLASSBIT(classletter[k])) != 0;
 }
 
 static int
@@ -666,34 +685,31 @@ int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	FILE *fp;
 	struct qtrec rec;
 	enum qtkind kind;
-	const char *name;
 	int ch, verbose = 0;
 
 	setprogname_(argv[0]);
-	classes("FEP");
+	setdrawn(optclasses("FEP"));
 	while ((ch = getopt(argc, argv, "c:m:nNvw:")) != -1)
 		switch (ch) {
 		case 'c':
-			memset(drawn, 0, sizeof(drawn));
-			classes(optarg);
+			setdrawn(optclasses(optarg));
 			break;
 		case 'm':
-			margin = pixels(ch, optarg, 0);
+			opt.margin = pixels(ch, optarg, 0);
 			break;
 		case 'n':
-			nflag = 1;
+			opt.nflag = 1;
 			break;
 		case 'N':
-			Nflag = 1;
+			opt.Nflag = 1;
 			break;
 		case 'v':
 			verbose = 1;
 			break;
 		case 'w':
-			width = pixels(ch, optarg, 1);
+			opt.width = pixels(ch, optarg, 1);
 			break;
 		default:
 			usage();
@@ -702,17 +718,16 @@ main(int argc, char *argv[])
 	argv += optind;
 	if (argc > 1)
 		usage();
-	if (width - 2 * margin < 1)
-		die(2, "-m %d leaves no room in -w %d", margin, width);
+	if (opt.width - 2 * opt.margin < 1)
+		die(2, "-m %d leaves no room in -w %d", opt.margin, opt.width);
 
-	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	r = qt_open(fp, name,
+	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    QT_NEEDUNIVERSE | (verbose ? QT_VERBOSE : 0));
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
 		case QT_UNIVERSE:
-			u = rec.u;
-			scale = (width - 2 * margin) / u.size;
+			pic.u = rec.u;
+			pic.scale = (opt.width - 2 * opt.margin) / pic.u.size;
 			break;
 		case QT_RING:
 			ring(&rec.ring);
@@ -730,13 +745,13 @@ main(int argc, char *argv[])
 			break;
 		}
 	}
-	qt_close(r);
-	if (nflag && nelems == 0 && nleaflabels == 0)
-		warnat(name, 0, "-n: no element numbers in the stream "
+	if (opt.nflag && pic.mesh.nelems == 0 && pic.leaves.nlabels == 0)
+		warnat(qt_name(r), 0, "-n: no element numbers in the stream "
 		    "(qtleaves adds them)");
-	if (Nflag && nverts == 0)
-		warnat(name, 0, "-N: no vertex records in the stream "
+	if (opt.Nflag && pic.mesh.nverts == 0)
+		warnat(qt_name(r), 0, "-N: no vertex records in the stream "
 		    "(qtleaves -n adds them)");
+	qt_close(r);
 	writesvg();
 	closeout();
 	return 0;

@@ -29,13 +29,11 @@
 
 #define GRID	QT_MAXLEVEL
 
-static char keep[256];
-static int mesh, verbose;
-
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: qtleaves [-nv] [-c classes] [file]\n");
+	fprintf(stderr, "usage: qtleaves [-nv] [-c classes] [-f format] "
+	    "[file]\n");
 	exit(2);
 }
 
@@ -62,14 +60,19 @@ struct vslot {
 	uint32_t	id;
 };
 
-static struct vslot *live;
-static size_t livecap, nlive;
-static uint64_t curx, cury;	/* lower left of the leaf being meshed */
+static struct livetable {
+	struct vslot	*slot;
+	size_t		 cap, n;	/* slots, a power of two; in use */
+	uint64_t	 curx, cury;	/* lower left of the leaf at hand */
+} live;
 
-static uint64_t (*vert)[2];	/* grid point of each vertex */
-static size_t nvert, vertcap;
-static uint32_t (*elem)[4];	/* vertex numbers of each element */
-static size_t nelem, elemcap;
+/* The mesh to write once the stream is read. */
+static struct mesh {
+	uint64_t	(*vert)[2];	/* grid point of each vertex */
+	size_t		 nvert, vertcap;
+	uint32_t	(*elem)[4];	/* vertex numbers of each element */
+	size_t		 nelem, elemcap;
+} mesh;
 
 static size_t
 vhash(uint64_t x, uint64_t y)
@@ -77,7 +80,20 @@ vhash(uint64_t x, uint64_t y)
 	uint64_t h = x * UINT64_C(0x9E3779B97F4A7C15) ^
 	    y * UINT64_C(0xC2B2AE3D27D4EB4F);
 
-	return (h ^ h >> 31) & (livecap - 1);
+	return (h ^ h >> 31) & (live.cap - 1);
+}
+
+static size_t
+nextslot(size_t k)
+{
+	return (k + 1) & (live.cap - 1);
+}
+
+/* Corners before the leaf at hand in Z order are never met again. */
+static int
+passed(const struct vslot *v)
+{
+	return zbefore(v->x, v->y, live.curx, live.cury);
 }
 
 static void
@@ -85,10 +101,10 @@ liveinsert(const struct vslot *v)
 {
 	size_t k;
 
-	for (k = vhash(v->x, v->y); live[k].id != 0; k = (k + 1) & (livecap - 1))
+	for (k = vhash(v->x, v->y); live.slot[k].id != 0; k = nextslot(k))
 		;
-	live[k] = *v;
-	nlive++;
+	live.slot[k] = *v;
+	live.n++;
 }
 
 /*
@@ -98,20 +114,20 @@ liveinsert(const struct vslot *v)
 static void
 liveprune(void)
 {
-	struct vslot *old = live;
-	size_t oldcap = livecap, i, keepn = 0;
+	struct vslot *old = live.slot;
+	size_t oldcap = live.cap, i, keepn = 0;
 
 	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0 && !zbefore(old[i].x, old[i].y, curx, cury))
+		if (old[i].id != 0 && !passed(&old[i]))
 			keepn++;
-	livecap = oldcap ? oldcap : 1024;
-	while (4 * (keepn + 1) > livecap)
-		livecap *= 2;
-	live = xreallocarray(NULL, livecap, sizeof(*live));
-	memset(live, 0, livecap * sizeof(*live));
-	nlive = 0;
+	live.cap = oldcap ? oldcap : 1024;
+	while (4 * (keepn + 1) > live.cap)
+		live.cap *= 2;
+	live.slot = xreallocarray(NULL, live.cap, sizeof(*live.slot));
+	memset(live.slot, 0, live.cap * sizeof(*live.slot));
+	live.n = 0;
 	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0 && !zbefore(old[i].x, old[i].y, curx, cury))
+		if (old[i].id != 0 && !passed(&old[i]))
 			liveinsert(&old[i]);
 	free(old);
 }
@@ -124,22 +140,23 @@ vertex(uint64_t x, uint64_t y)
 	size_t k;
 
 	/* pruning keeps the current leaf's corners: none lies before it */
-	if (2 * (nlive + 1) > livecap)
+	if (2 * (live.n + 1) > live.cap)
 		liveprune();
-	for (k = vhash(x, y); live[k].id != 0; k = (k + 1) & (livecap - 1))
-		if (live[k].x == x && live[k].y == y)
-			return live[k].id;
-	if (nvert == UINT32_MAX)
+	for (k = vhash(x, y); live.slot[k].id != 0; k = nextslot(k))
+		if (live.slot[k].x == x && live.slot[k].y == y)
+			return live.slot[k].id;
+	if (mesh.nvert == UINT32_MAX)
 		die(1, "more than %lu vertices", (unsigned long)UINT32_MAX);
-	if (nvert == vertcap) {
-		vertcap = vertcap ? 2 * vertcap : 1024;
-		vert = xreallocarray(vert, vertcap, sizeof(*vert));
+	if (mesh.nvert == mesh.vertcap) {
+		mesh.vertcap = mesh.vertcap ? 2 * mesh.vertcap : 1024;
+		mesh.vert = xreallocarray(mesh.vert, mesh.vertcap,
+		    sizeof(*mesh.vert));
 	}
-	vert[nvert][0] = x;
-	vert[nvert][1] = y;
+	mesh.vert[mesh.nvert][0] = x;
+	mesh.vert[mesh.nvert][1] = y;
 	v.x = x;
 	v.y = y;
-	v.id = ++nvert;
+	v.id = ++mesh.nvert;
 	liveinsert(&v);
 	return v.id;
 }
@@ -155,20 +172,21 @@ meshleaf(const struct cell *c, int kept)
 	uint64_t x = c->ix << shift, y = c->iy << shift;
 	uint64_t s = (uint64_t)1 << shift;
 
-	curx = x;
-	cury = y;
+	live.curx = x;
+	live.cury = y;
 	if (!kept)
 		return;
-	if (nelem == elemcap) {
-		elemcap = elemcap ? 2 * elemcap : 1024;
-		elem = xreallocarray(elem, elemcap, sizeof(*elem));
+	if (mesh.nelem == mesh.elemcap) {
+		mesh.elemcap = mesh.elemcap ? 2 * mesh.elemcap : 1024;
+		mesh.elem = xreallocarray(mesh.elem, mesh.elemcap,
+		    sizeof(*mesh.elem));
 	}
 	/* counter-clockwise from the lower left */
-	elem[nelem][0] = vertex(x, y);
-	elem[nelem][1] = vertex(x + s, y);
-	elem[nelem][2] = vertex(x + s, y + s);
-	elem[nelem][3] = vertex(x, y + s);
-	nelem++;
+	mesh.elem[mesh.nelem][0] = vertex(x, y);
+	mesh.elem[mesh.nelem][1] = vertex(x + s, y);
+	mesh.elem[mesh.nelem][2] = vertex(x + s, y + s);
+	mesh.elem[mesh.nelem][3] = vertex(x, y + s);
+	mesh.nelem++;
 }
 
 static void
@@ -178,48 +196,87 @@ writemesh(void)
 	size_t i;
 	int k;
 
-	for (i = 0; i < nvert; i++)
-		qt_gridvertex(i + 1, GRID, vert[i][0], vert[i][1]);
-	for (i = 0; i < nelem; i++) {
+	for (i = 0; i < mesh.nvert; i++)
+		qt_gridvertex(i + 1, GRID, mesh.vert[i][0], mesh.vert[i][1]);
+	for (i = 0; i < mesh.nelem; i++) {
 		for (k = 0; k < 4; k++)
-			v[k] = elem[i][k];
+			v[k] = mesh.elem[i][k];
 		qt_elem(i + 1, "quad", 4, v);
 	}
 }
 
+enum format { QTREE, GEOJSON, WKT };
+
+/*
+ * A kept leaf for GIS tools: its square, counter-clockwise from the lower
+ * left and closed, with its path, level, class and element number.
+ */
 static void
-setclasses(const char *s)
+putgis(enum format format, const struct universe *u, const struct cell *c,
+    unsigned long long id)
 {
-	if (*s == '\0')
-		die(2, "-c: no classes given (a string of F, E and P)");
-	memset(keep, 0, sizeof(keep));
-	for (; *s != '\0'; s++) {
-		if (*s != 'F' && *s != 'E' && *s != 'P')
-			die(2, "-c: unknown class %c (F, E or P)", *s);
-		keep[(unsigned char)*s] = 1;
+	char x[2][32], y[2][32];
+	int i;
+
+	fmtreal(x[0], c->x);
+	fmtreal(y[0], c->y);
+	fmtreal(x[1], u->x0 + (double)(c->ix + 1) * c->size);
+	fmtreal(y[1], u->y0 + (double)(c->iy + 1) * c->size);
+	if (format == WKT) {
+		printf("%s\t%d\t%c\t%llu\tPOLYGON ((", c->path, c->level,
+		    c->class, id);
+		for (i = 0; i < 5; i++)
+			printf("%s%s %s", i > 0 ? ", " : "",
+			    x[(i + 1) / 2 % 2], y[i / 2 % 2]);
+		printf("))\n");
+		return;
 	}
+	printf("%s{\"type\":\"Feature\",\"properties\":{\"path\":\"%s\","
+	    "\"level\":%d,\"class\":\"%c\",\"id\":%llu},\"geometry\":"
+	    "{\"type\":\"Polygon\",\"coordinates\":[[", id > 1 ? ",\n" : "",
+	    c->path, c->level, c->class, id);
+	for (i = 0; i < 5; i++)
+		printf("%s[%s,%s]", i > 0 ? "," : "", x[(i + 1) / 2 % 2],
+		    y[i / 2 % 2]);
+	printf("]]}}");
+}
+
+static enum format
+parseformat(const char *arg)
+{
+	if (strcmp(arg, "qtree") == 0)
+		return QTREE;
+	if (strcmp(arg, "geojson") == 0)
+		return GEOJSON;
+	if (strcmp(arg, "wkt") == 0)
+		return WKT;
+	die(2, "-f: unknown format %s (qtree, geojson, wkt)", arg);
+	return QTREE;
 }
 
 int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	FILE *fp;
 	struct qtrec rec;
 	enum qtkind kind;
-	const char *name;
 	unsigned long long id = 0;
-	int ch, kept;
+	struct universe u = { 0, 0, 1 };
+	enum format format = QTREE;
+	unsigned keep = CLASSBIT('F') | CLASSBIT('P');
+	int ch, kept, nflag = 0, verbose = 0;
 
 	setprogname_(argv[0]);
-	setclasses("FP");
-	while ((ch = getopt(argc, argv, "c:nv")) != -1)
+	while ((ch = getopt(argc, argv, "c:f:nv")) != -1)
 		switch (ch) {
 		case 'c':
-			setclasses(optarg);
+			keep = optclasses(optarg);
+			break;
+		case 'f':
+			format = parseformat(optarg);
 			break;
 		case 'n':
-			mesh = 1;
+			nflag = 1;
 			break;
 		case 'v':
 			verbose = 1;
@@ -231,12 +288,21 @@ main(int argc, char *argv[])
 	argv += optind;
 	if (argc > 1)
 		usage();
+	if (nflag && format != QTREE)
+		die(2, "-n: a mesh is written in the qtree format only");
 
-	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	r = qt_open(fp, name,
+	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    verbose ? QT_VERBOSE : 0);
-	qt_header();
+	if (format == QTREE)
+		qt_header();
+	else if (format == GEOJSON)
+		printf("{\"type\":\"FeatureCollection\",\"features\":[\n");
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
+		if (format != QTREE && kind != QT_LEAF) {
+			if (kind == QT_UNIVERSE)
+				u = rec.u;
+			continue;	/* GIS tools take the leaves alone */
+		}
 		switch (kind) {
 		case QT_UNIVERSE:
 			qt_universe(&rec.u);
@@ -250,10 +316,12 @@ main(int argc, char *argv[])
 		case QT_NODE:
 			break;
 		case QT_LEAF:
-			kept = keep[(unsigned char)rec.c.class];
-			if (kept)
+			kept = (keep & CLASSBIT(rec.c.class)) != 0;
+			if (kept && format == QTREE)
 				qt_cell(&rec.c, ++id);
-			if (mesh)
+			else if (kept)
+				putgis(format, &u, &rec.c, ++id);
+			if (nflag)
 				meshleaf(&rec.c, kept);
 			break;
 		case QT_VERTEX:
@@ -268,9 +336,12 @@ main(int argc, char *argv[])
 		}
 	}
 	qt_close(r);
-	if (mesh)
+	if (nflag)
 		writemesh();
-	qt_end();
+	if (format == QTREE)
+		qt_end();
+	else if (format == GEOJSON)
+		printf("\n]}\n");
 	closeout();
 	return 0;
 }

@@ -22,24 +22,40 @@ struct edge {
 	double	xmin, ymin, xmax, ymax;
 };
 
-static struct edge *edges;
-static size_t nedges;
-static struct universe u;
-static int maxlevel = -1, minlevel = 0, streamlevel = -1, verbose;
-static char path[QT_MAXLEVEL + 2];
-static double step[QT_MAXLEVEL + 1];	/* the cell size at each level */
+/* What the options ask for; maxlevel is -1 until the stream is read. */
+static struct options {
+	int	minlevel, maxlevel;
+	int	verbose;
+} opt = { .maxlevel = -1 };
 
-/* The records written as read: rings, then any others. */
-static struct qtrec **rings, **others;
-static size_t nrings, nothers;
+/*
+ * The stream: its universe, its rings' edges, and its records to write as
+ * read, rings first.
+ */
+static struct input {
+	struct universe	 u;
+	int		 level;		/* of its level record; -1 for none */
+	struct edge	*edges;
+	size_t		 nedges;
+	struct qtrec	**rings, **others;
+	size_t		 nrings, nothers;
+} in = { .level = -1 };
 
 /* Per level: the cell's edges and, per edge, the children it meets. */
-static uint32_t *lists[QT_MAXLEVEL + 2];
-static size_t listcap[QT_MAXLEVEL + 2];
-static unsigned char *masks[QT_MAXLEVEL + 2];
+struct worklist {
+	uint32_t	*edges;		/* into in.edges */
+	unsigned char	*masks;
+	size_t		 cap;
+};
 
-static unsigned long long ncells;
-static int deepest;
+/* The walk down the tree, in preorder, and what it has written. */
+static struct walk {
+	double		 step[QT_MAXLEVEL + 1];	/* cell size by level */
+	struct worklist	 list[QT_MAXLEVEL + 2];
+	char		 path[QT_MAXLEVEL + 2];	/* of the cell at hand */
+	unsigned long long ncells;
+	int		 deepest;
+} walk;
 
 static void
 usage(void)
@@ -69,13 +85,13 @@ nudged(const struct edge *e, int o)
 static void
 reserve(int level, size_t n)
 {
-	if (n <= listcap[level])
+	struct worklist *l = &walk.list[level];
+
+	if (n <= l->cap)
 		return;
-	listcap[level] = n + n / 2 + 16;
-	lists[level] = xreallocarray(lists[level], listcap[level],
-	    sizeof(*lists[level]));
-	masks[level] = xreallocarray(masks[level], listcap[level],
-	    sizeof(*masks[level]));
+	l->cap = n + n / 2 + 16;
+	l->edges = xreallocarray(l->edges, l->cap, sizeof(*l->edges));
+	l->masks = xreallocarray(l->masks, l->cap, sizeof(*l->masks));
 }
 
 static void
@@ -88,9 +104,9 @@ keep(struct qtrec ***list, size_t *n, const struct qtrec *rec)
 static void
 report(int force)
 {
-	if (verbose)
-		progress(force, "%llu cells, deepest level %d", ncells,
-		    deepest);
+	if (opt.verbose)
+		progress(force, "%llu cells, deepest level %d", walk.ncells,
+		    walk.deepest);
 }
 
 /* Writes a cell; class 0 for a node. */
@@ -99,40 +115,40 @@ emit(int level, uint64_t ix, uint64_t iy, char class)
 {
 	struct cell c;
 
-	c.path = level > 0 ? path : ".";
+	c.path = level > 0 ? walk.path : ".";
 	c.level = level;
 	c.ix = ix;
 	c.iy = iy;
 	c.class = class;
 	c.text = NULL;
 	qt_cell(&c, 0);
-	if (level > deepest)
-		deepest = level;
-	if ((++ncells & 0xfffff) == 0)
+	if (level > walk.deepest)
+		walk.deepest = level;
+	if ((++walk.ncells & 0xfffff) == 0)
 		report(0);
 }
 
 /*
- * Sorts the edges of cell (level, ix, iy) into its children: masks[level]
- * gets, per edge, a bit for each child whose open interior it meets.  The
+ * Sorts the edges of cell (level, ix, iy) into its children: the level's
+ * masks get, per edge, a bit for each child whose open interior it meets.  The
  * parities of the children's reference points go to parity[0..3].
  */
 static void
 children(int level, uint64_t ix, uint64_t iy, size_t n, int inside,
     int parity[4])
 {
-	const uint32_t *list = lists[level];
-	unsigned char *mask = masks[level];
+	const uint32_t *list = walk.list[level].edges;
+	unsigned char *mask = walk.list[level].masks;
 	double gx[3], gy[3];
 	int bottom = 0, left = 0, middle = 0;
 	size_t k;
 
 	for (k = 0; k < 3; k++) {
-		gx[k] = u.x0 + (double)(2 * ix + k) * step[level + 1];
-		gy[k] = u.y0 + (double)(2 * iy + k) * step[level + 1];
+		gx[k] = in.u.x0 + (double)(2 * ix + k) * walk.step[level + 1];
+		gy[k] = in.u.y0 + (double)(2 * iy + k) * walk.step[level + 1];
 	}
 	for (k = 0; k < n; k++) {
-		const struct edge *e = &edges[list[k]];
+		const struct edge *e = &in.edges[list[k]];
 		/* orientation at grid point (i, j) in s[3 * j + i]; 2: unknown */
 		signed char s[9] = { 2, 2, 2, 2, 2, 2, 2, 2, 2 };
 		int inx[2], iny[2], q, m = 0;
@@ -207,17 +223,17 @@ children(int level, uint64_t ix, uint64_t iy, size_t n, int inside,
 	parity[3] = parity[1] ^ middle;
 }
 
-/* Moves the edges of child q from lists[level] to lists[level + 1]. */
+/* Moves the edges of child q from the level's list to the next level's. */
 static size_t
 childlist(int level, size_t n, int q)
 {
-	const uint32_t *list = lists[level];
-	const unsigned char *mask = masks[level];
+	const uint32_t *list = walk.list[level].edges;
+	const unsigned char *mask = walk.list[level].masks;
 	uint32_t *out;
 	size_t k, m = 0;
 
 	reserve(level + 1, n);
-	out = lists[level + 1];
+	out = walk.list[level + 1].edges;
 	for (k = 0; k < n; k++)
 		if (mask[k] >> q & 1)
 			out[m++] = list[k];
@@ -227,10 +243,10 @@ childlist(int level, size_t n, int q)
 static int
 splits(int level, size_t n)
 {
-	return level < minlevel || (n > 0 && level < maxlevel);
+	return level < opt.minlevel || (n > 0 && level < opt.maxlevel);
 }
 
-/* Writes the cell and its subtree; its edges are lists[level][0..n-1]. */
+/* Writes the cell and its subtree; its edges are list[level].edges[0..n-1]. */
 static void
 visit(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
 {
@@ -248,12 +264,12 @@ visit(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
 	for (q = 0; q < 4; q++) {
 		size_t m = n > 0 ? childlist(level, n, q) : 0;
 
-		path[level] = '0' + q;
-		path[level + 1] = '\0';
+		walk.path[level] = '0' + q;
+		walk.path[level + 1] = '\0';
 		visit(level + 1, 2 * ix + (q & 1), 2 * iy + (q >> 1), m,
 		    parity[q]);
 	}
-	path[level] = '\0';
+	walk.path[level] = '\0';
 }
 
 /* Even-odd parity of the universe's reference point, by a ray to +x. */
@@ -263,13 +279,13 @@ rootparity(void)
 	size_t i;
 	int inside = 0;
 
-	for (i = 0; i < nedges; i++) {
-		const struct edge *e = &edges[i];
+	for (i = 0; i < in.nedges; i++) {
+		const struct edge *e = &in.edges[i];
 		int s;
 
-		if ((e->ay > u.y0) == (e->by > u.y0))
+		if ((e->ay > in.u.y0) == (e->by > in.u.y0))
 			continue;
-		s = nudged(e, orient(e, u.x0, u.y0));
+		s = nudged(e, orient(e, in.u.x0, in.u.y0));
 		if (e->by > e->ay ? s > 0 : s < 0)
 			inside ^= 1;
 	}
@@ -280,27 +296,27 @@ rootparity(void)
 static size_t
 rootlist(void)
 {
-	double x1 = u.x0 + u.size, y1 = u.y0 + u.size;
+	double x1 = in.u.x0 + in.u.size, y1 = in.u.y0 + in.u.size;
 	size_t i, n = 0;
 
-	reserve(0, nedges);
-	for (i = 0; i < nedges; i++) {
-		const struct edge *e = &edges[i];
+	reserve(0, in.nedges);
+	for (i = 0; i < in.nedges; i++) {
+		const struct edge *e = &in.edges[i];
 		int o[4], c, pos = 0, neg = 0;
 
-		if (!(e->xmin < x1 && e->xmax > u.x0 && e->ymin < y1 &&
-		    e->ymax > u.y0))
+		if (!(e->xmin < x1 && e->xmax > in.u.x0 && e->ymin < y1 &&
+		    e->ymax > in.u.y0))
 			continue;
-		o[0] = orient(e, u.x0, u.y0);
-		o[1] = orient(e, x1, u.y0);
-		o[2] = orient(e, u.x0, y1);
+		o[0] = orient(e, in.u.x0, in.u.y0);
+		o[1] = orient(e, x1, in.u.y0);
+		o[2] = orient(e, in.u.x0, y1);
 		o[3] = orient(e, x1, y1);
 		for (c = 0; c < 4; c++) {
 			pos |= o[c] > 0;
 			neg |= o[c] < 0;
 		}
 		if (pos && neg)
-			lists[0][n++] = i;
+			walk.list[0].edges[n++] = i;
 	}
 	return n;
 }
@@ -310,9 +326,9 @@ addring(const struct ring *ring)
 {
 	size_t i, nv = ring->n;
 
-	edges = xreallocarray(edges, nedges + nv, sizeof(*edges));
+	in.edges = xreallocarray(in.edges, in.nedges + nv, sizeof(*in.edges));
 	for (i = 0; i < nv; i++) {
-		struct edge *e = &edges[nedges++];
+		struct edge *e = &in.edges[in.nedges++];
 		struct point a = ring->v[i], b = ring->v[(i + 1) % nv];
 
 		e->ax = a.x, e->ay = a.y, e->bx = b.x, e->by = b.y;
@@ -334,14 +350,14 @@ readrings(struct qtreader *r)
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
 		case QT_UNIVERSE:
-			u = rec.u;
+			in.u = rec.u;
 			break;
 		case QT_LEVEL:
-			streamlevel = rec.level;
+			in.level = rec.level;
 			break;
 		case QT_RING:
 			addring(&rec.ring);
-			keep(&rings, &nrings, &rec);
+			keep(&in.rings, &in.nrings, &rec);
 			break;
 		case QT_NODE:
 		case QT_LEAF:
@@ -349,12 +365,12 @@ readrings(struct qtreader *r)
 			    "takes rings");
 			break;
 		default:
-			keep(&others, &nothers, &rec);
+			keep(&in.others, &in.nothers, &rec);
 			break;
 		}
 	}
-	if (nedges > UINT32_MAX)
-		die(1, "too many edges: %zu", nedges);
+	if (in.nedges > UINT32_MAX)
+		die(1, "too many edges: %zu", in.nedges);
 }
 
 static void
@@ -363,21 +379,21 @@ writehead(void)
 	size_t i;
 
 	qt_header();
-	qt_universe(&u);
-	qt_level(maxlevel);
-	for (i = 0; i < nrings; i++) {
-		qt_echo(rings[i]);
-		qt_free(rings[i]);
+	qt_universe(&in.u);
+	qt_level(opt.maxlevel);
+	for (i = 0; i < in.nrings; i++) {
+		qt_echo(in.rings[i]);
+		qt_free(in.rings[i]);
 	}
-	for (i = 0; i < nothers; i++) {
-		qt_echo(others[i]);
-		qt_free(others[i]);
+	for (i = 0; i < in.nothers; i++) {
+		qt_echo(in.others[i]);
+		qt_free(in.others[i]);
 	}
 }
 
 /*
  * Walks down to the cell at path, as visit would, leaving its edges in
- * lists[depth][0..*n-1] and its parity in *inside; returns its depth.
+ * list[depth].edges[0..*n-1] and its parity in *inside; returns its depth.
  */
 static int
 descend(const char *subtree, uint64_t *ix, uint64_t *iy, size_t *n,
@@ -402,9 +418,9 @@ descend(const char *subtree, uint64_t *ix, uint64_t *iy, size_t *n,
 			parity[q] = *inside;
 		*n = *n > 0 ? childlist(i, *n, q) : 0;
 		*inside = parity[q];
-		path[i] = subtree[i];
+		walk.path[i] = subtree[i];
 	}
-	path[depth] = '\0';
+	walk.path[depth] = '\0';
 	return depth;
 }
 
@@ -412,8 +428,7 @@ int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	FILE *fp;
-	const char *end, *name, *subtree = ".";
+	const char *end, *subtree = ".";
 	long long val;
 	uint64_t ix = 0, iy = 0;
 	size_t n;
@@ -429,15 +444,15 @@ main(int argc, char *argv[])
 				die(2, "-%c: level must be an integer from 0 "
 				    "to %d: %s", ch, QT_MAXLEVEL, optarg);
 			if (ch == 'l')
-				maxlevel = val;
+				opt.maxlevel = val;
 			else
-				minlevel = val;
+				opt.minlevel = val;
 			break;
 		case 'r':
 			subtree = optarg;
 			break;
 		case 'v':
-			verbose = 1;
+			opt.verbose = 1;
 			break;
 		default:
 			usage();
@@ -447,18 +462,17 @@ main(int argc, char *argv[])
 	if (argc > 1)
 		usage();
 
-	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	r = qt_open(fp, name,
+	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    QT_NEEDUNIVERSE);
 	readrings(r);
 	qt_close(r);
-	if (maxlevel < 0)
-		maxlevel = streamlevel >= 0 ? streamlevel : 6;
-	if (minlevel > maxlevel)
-		die(2, "-m %d is deeper than the maximum level %d", minlevel,
-		    maxlevel);
+	if (opt.maxlevel < 0)
+		opt.maxlevel = in.level >= 0 ? in.level : 6;
+	if (opt.minlevel > opt.maxlevel)
+		die(2, "-m %d is deeper than the maximum level %d",
+		    opt.minlevel, opt.maxlevel);
 	for (i = 0; i <= QT_MAXLEVEL; i++)
-		step[i] = ldexp(u.size, -i);
+		walk.step[i] = ldexp(in.u.size, -i);
 
 	writehead();
 	inside = rootparity();

@@ -16,12 +16,12 @@
 
 enum { F, E, P };
 
-static struct universe u;
-
 /* The polygon, summed ring by ring as its records stream past. */
-static struct moments region, ringmo;
-static unsigned long long nrings, nholes;
-static double perim, perimlow;	/* a compensated sum */
+static struct polygon {
+	struct moments	 region, ring;	/* all rings so far, the ring at hand */
+	unsigned long long nrings, nholes;
+	double		 perim, perimlow;	/* a compensated sum */
+} poly;
 
 /* Cells per level; sums of 2 IX + 1 and 2 IY + 1 for the centroids. */
 struct u128 {
@@ -31,10 +31,15 @@ struct u128 {
 struct levelstat {
 	unsigned long long	nodes, leaves[3];
 	struct u128		sx[3], sy[3];
+	struct u128		nodesx, nodesy;	/* for the tree cut here */
 };
 
-static struct levelstat lev[QT_MAXLEVEL + 1];
-static int deepest = -1;
+/* The cells, level by level, of the universe they divide. */
+static struct tree {
+	struct universe	 u;
+	struct levelstat lev[QT_MAXLEVEL + 1];
+	int		 deepest;
+} tree = { .deepest = -1 };
 
 /*
  * Level jumps between side neighbours, found as the leaves stream past.
@@ -60,11 +65,13 @@ struct subtree {
 	int		 done;
 };
 
-/* child[d]: the children of the last leaf's ancestor at depth d */
-static struct subtree child[QT_MAXLEVEL][4];
-static char lastpath[QT_MAXLEVEL];
-static int lastlen = -1;
-static int maxjump;
+static struct jumps {
+	/* child[d]: the children of the last leaf's ancestor at depth d */
+	struct subtree	 child[QT_MAXLEVEL][4];
+	char		 lastpath[QT_MAXLEVEL];	/* the last leaf's */
+	int		 lastlen;
+	int		 max;		/* the largest jump yet */
+} jump = { .lastlen = -1 };
 
 /* The mesh records. */
 struct etype {
@@ -72,15 +79,18 @@ struct etype {
 	unsigned long long	 n;
 };
 
-static struct point *verts;
-static size_t nverts, vertcap;
-static uint32_t *refs;		/* vertex numbers, from 0 */
-static size_t nrefs, refcap;
-static size_t *eoff;		/* element i: refs[eoff[i]..eoff[i+1]-1] */
-static size_t nelems, elemcap;
-static struct etype *types;
-static size_t ntypes;
-static int havemesh;
+static struct mesh {
+	int		 present;	/* a vertex or elem record came */
+	struct point	*verts;
+	size_t		 nverts, vertcap;
+	uint32_t	*refs;		/* vertex numbers, from 0 */
+	size_t		 nrefs, refcap;
+	/* element i: refs[eoff[i]..eoff[i+1]-1] */
+	size_t		*eoff;
+	size_t		 nelems, elemcap;
+	struct etype	*types;
+	size_t		 ntypes;
+} mesh;
 
 static void
 usage(void)
@@ -106,20 +116,20 @@ u128real(const struct u128 *s)
 static void
 addperim(double len)
 {
-	double t = perim + len;
+	double t = poly.perim + len;
 
 	/* Neumaier: keep what the larger addend rounds away */
-	if (fabs(perim) >= fabs(len))
-		perimlow += (perim - t) + len;
+	if (fabs(poly.perim) >= fabs(len))
+		poly.perimlow += (poly.perim - t) + len;
 	else
-		perimlow += (len - t) + perim;
-	perim = t;
+		poly.perimlow += (len - t) + poly.perim;
+	poly.perim = t;
 }
 
 static void
 edge(struct point a, struct point b)
 {
-	mo_edge(&ringmo, a, b);
+	mo_edge(&poly.ring, a, b);
 	addperim(hypot(b.x - a.x, b.y - a.y));
 }
 
@@ -132,9 +142,9 @@ endring(int hole)
 {
 	int want = hole ? -1 : 1, sign;
 
-	sign = xs_sign(&ringmo.a2);
-	mo_addmo(&region, &ringmo, sign == want || sign == 0 ? 1 : -1);
-	mo_zero(&ringmo);
+	sign = xs_sign(&poly.ring.a2);
+	mo_addmo(&poly.region, &poly.ring, sign == want || sign == 0 ? 1 : -1);
+	mo_zero(&poly.ring);
 }
 
 static void
@@ -142,8 +152,8 @@ ring(const struct ring *g)
 {
 	size_t i;
 
-	nrings++;
-	nholes += g->hole;
+	poly.nrings++;
+	poly.nholes += g->hole;
 	for (i = 0; i < g->n; i++)
 		edge(g->v[i], g->v[(i + 1) % g->n]);
 	endring(g->hole);
@@ -200,8 +210,8 @@ facing(const struct side *a, const struct side *b)
 	if (a->n == 1 && b->n == 1) {	/* the most common case, two leaves */
 		int la = a->v[0], lb = b->v[0];
 
-		if (!((la | lb) & GAP) && abs(la - lb) > maxjump)
-			maxjump = abs(la - lb);
+		if (!((la | lb) & GAP) && abs(la - lb) > jump.max)
+			jump.max = abs(la - lb);
 		return;
 	}
 	ea = stretch(a->v[0]);
@@ -209,8 +219,8 @@ facing(const struct side *a, const struct side *b)
 	for (;;) {
 		int la = a->v[i], lb = b->v[j];
 
-		if (!((la | lb) & GAP) && abs(la - lb) > maxjump)
-			maxjump = abs(la - lb);
+		if (!((la | lb) & GAP) && abs(la - lb) > jump.max)
+			jump.max = abs(la - lb);
 		e = ea < eb ? ea : eb;
 		if (ea == e) {
 			if (++i == a->n)
@@ -232,7 +242,7 @@ facing(const struct side *a, const struct side *b)
 static void
 closedepth(int d)
 {
-	struct subtree *c = child[d], *t;
+	struct subtree *c = jump.child[d], *t;
 	int i;
 
 	for (i = 0; i < 4; i++)
@@ -244,7 +254,7 @@ closedepth(int d)
 	facing(&c[0].side[NORTH], &c[2].side[SOUTH]);
 	facing(&c[1].side[NORTH], &c[3].side[SOUTH]);
 	if (d > 0) {
-		t = &child[d - 1][lastpath[d - 1] - '0'];
+		t = &jump.child[d - 1][jump.lastpath[d - 1] - '0'];
 		joinsides(&t->side[WEST], &c[0].side[WEST], &c[2].side[WEST]);
 		joinsides(&t->side[EAST], &c[1].side[EAST], &c[3].side[EAST]);
 		joinsides(&t->side[SOUTH], &c[0].side[SOUTH], &c[1].side[SOUTH]);
@@ -262,30 +272,32 @@ jumpleaf(const char *path, int level)
 	int d, k = 0;
 
 	if (path != NULL)
-		k = pathprefix(path, level, lastpath, lastlen);
-	/* the reader saw to it that path follows lastpath in preorder */
-	for (d = lastlen - 1; d >= k && d >= 0; d--)
+		k = pathprefix(path, level, jump.lastpath, jump.lastlen);
+	/* the reader saw to it that path follows jump.lastpath in preorder */
+	for (d = jump.lastlen - 1; d >= k && d >= 0; d--)
 		if (d > k || path == NULL)
 			closedepth(d);
 	if (path == NULL || level == 0)
 		return;
-	oneentry(&child[level - 1][path[level - 1] - '0'], level);
-	child[level - 1][path[level - 1] - '0'].done = 1;
+	oneentry(&jump.child[level - 1][path[level - 1] - '0'], level);
+	jump.child[level - 1][path[level - 1] - '0'].done = 1;
 	for (d = k; d < level; d++)
-		lastpath[d] = path[d];
-	lastlen = level;
+		jump.lastpath[d] = path[d];
+	jump.lastlen = level;
 }
 
 static void
 addcell(const struct cell *c)
 {
-	struct levelstat *s = &lev[c->level];
+	struct levelstat *s = &tree.lev[c->level];
 	int k;
 
-	if (c->level > deepest)
-		deepest = c->level;
+	if (c->level > tree.deepest)
+		tree.deepest = c->level;
 	if (c->class == 0) {
 		s->nodes++;
+		add128(&s->nodesx, 2 * c->ix + 1);
+		add128(&s->nodesy, 2 * c->iy + 1);
 		return;
 	}
 	k = c->class == 'F' ? F : c->class == 'E' ? E : P;
@@ -298,45 +310,50 @@ addcell(const struct cell *c)
 static void
 meshvertex(const struct meshvertex *v)
 {
-	if (nverts == vertcap) {
-		vertcap = vertcap ? 2 * vertcap : 1024;
-		verts = xreallocarray(verts, vertcap, sizeof(*verts));
+	struct mesh *m = &mesh;
+
+	if (m->nverts == m->vertcap) {
+		m->vertcap = m->vertcap ? 2 * m->vertcap : 1024;
+		m->verts = xreallocarray(m->verts, m->vertcap,
+		    sizeof(*m->verts));
 	}
-	verts[nverts++] = v->p;
+	m->verts[m->nverts++] = v->p;
 }
 
 static size_t
 typeindex(const char *name)
 {
+	struct mesh *m = &mesh;
 	size_t i;
 
-	for (i = 0; i < ntypes; i++)
-		if (strcmp(types[i].name, name) == 0)
+	for (i = 0; i < m->ntypes; i++)
+		if (strcmp(m->types[i].name, name) == 0)
 			return i;
-	types = xreallocarray(types, ntypes + 1, sizeof(*types));
-	types[ntypes].name = xstrdup(name);
-	types[ntypes].n = 0;
-	return ntypes++;
+	m->types = xreallocarray(m->types, m->ntypes + 1, sizeof(*m->types));
+	m->types[m->ntypes].name = xstrdup(name);
+	m->types[m->ntypes].n = 0;
+	return m->ntypes++;
 }
 
 static void
 meshelem(const struct meshelem *e)
 {
+	struct mesh *m = &mesh;
 	size_t k, t = typeindex(e->type);
 
-	types[t].n++;
-	if (nrefs + e->n > refcap) {
-		refcap = 2 * (nrefs + e->n);
-		refs = xreallocarray(refs, refcap, sizeof(*refs));
+	m->types[t].n++;
+	if (m->nrefs + e->n > m->refcap) {
+		m->refcap = 2 * (m->nrefs + e->n);
+		m->refs = xreallocarray(m->refs, m->refcap, sizeof(*m->refs));
 	}
-	if (nelems + 2 > elemcap) {
-		elemcap = elemcap ? 2 * elemcap : 1024;
-		eoff = xreallocarray(eoff, elemcap, sizeof(*eoff));
+	if (m->nelems + 2 > m->elemcap) {
+		m->elemcap = m->elemcap ? 2 * m->elemcap : 1024;
+		m->eoff = xreallocarray(m->eoff, m->elemcap, sizeof(*m->eoff));
 	}
-	eoff[nelems] = nrefs;
+	m->eoff[m->nelems] = m->nrefs;
 	for (k = 0; k < e->n; k++)
-		refs[nrefs++] = e->v[k] - 1;
-	eoff[++nelems] = nrefs;
+		m->refs[m->nrefs++] = e->v[k] - 1;
+	m->eoff[++m->nelems] = m->nrefs;
 }
 
 static void
@@ -348,7 +365,7 @@ readstream(struct qtreader *r)
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
 		case QT_UNIVERSE:
-			u = rec.u;
+			tree.u = rec.u;
 			break;
 		case QT_RING:
 			ring(&rec.ring);
@@ -359,11 +376,11 @@ readstream(struct qtreader *r)
 			break;
 		case QT_VERTEX:
 			meshvertex(&rec.vertex);
-			havemesh = 1;
+			mesh.present = 1;
 			break;
 		case QT_ELEM:
 			meshelem(&rec.elem);
-			havemesh = 1;
+			mesh.present = 1;
 			break;
 		default:
 			break;
@@ -377,8 +394,8 @@ static int byaxis;
 static int
 cmpvert(const void *pa, const void *pb)
 {
-	const struct point *a = &verts[*(const uint32_t *)pa];
-	const struct point *b = &verts[*(const uint32_t *)pb];
+	const struct point *a = &mesh.verts[*(const uint32_t *)pa];
+	const struct point *b = &mesh.verts[*(const uint32_t *)pb];
 	double a1 = byaxis ? a->y : a->x, b1 = byaxis ? b->y : b->x;
 	double a2 = byaxis ? a->x : a->y, b2 = byaxis ? b->x : b->y;
 	uint32_t ia = *(const uint32_t *)pa, ib = *(const uint32_t *)pb;
@@ -393,15 +410,15 @@ cmpvert(const void *pa, const void *pb)
 static uint32_t *
 sortverts(int axis, uint32_t **rank)
 {
-	uint32_t *order = xreallocarray(NULL, nverts, sizeof(*order));
+	uint32_t *order = xreallocarray(NULL, mesh.nverts, sizeof(*order));
 	size_t i;
 
-	*rank = xreallocarray(NULL, nverts, sizeof(**rank));
-	for (i = 0; i < nverts; i++)
+	*rank = xreallocarray(NULL, mesh.nverts, sizeof(**rank));
+	for (i = 0; i < mesh.nverts; i++)
 		order[i] = i;
 	byaxis = axis;
-	qsort(order, nverts, sizeof(*order), cmpvert);
-	for (i = 0; i < nverts; i++)
+	qsort(order, mesh.nverts, sizeof(*order), cmpvert);
+	for (i = 0; i < mesh.nverts; i++)
 		(*rank)[order[i]] = i;
 	return order;
 }
@@ -420,21 +437,21 @@ between(double v, double a, double b)
 static void
 slanted(const uint32_t *byx, uint32_t a, uint32_t b, char *hanging)
 {
-	struct point pa = verts[a], pb = verts[b];
+	struct point pa = mesh.verts[a], pb = mesh.verts[b];
 	double xlo = fmin(pa.x, pb.x), xhi = fmax(pa.x, pb.x);
 	double ylo = fmin(pa.y, pb.y), yhi = fmax(pa.y, pb.y);
-	size_t lo = 0, hi = nverts, k;
+	size_t lo = 0, hi = mesh.nverts, k;
 
 	while (lo < hi) {	/* first vertex with x > xlo */
 		size_t mid = lo + (hi - lo) / 2;
 
-		if (verts[byx[mid]].x <= xlo)
+		if (mesh.verts[byx[mid]].x <= xlo)
 			lo = mid + 1;
 		else
 			hi = mid;
 	}
-	for (k = lo; k < nverts && verts[byx[k]].x < xhi; k++) {
-		struct point v = verts[byx[k]];
+	for (k = lo; k < mesh.nverts && mesh.verts[byx[k]].x < xhi; k++) {
+		struct point v = mesh.verts[byx[k]];
 
 		if (v.y > ylo && v.y < yhi &&
 		    orient2d(pa.x, pa.y, pb.x, pb.y, v.x, v.y) == 0)
@@ -455,19 +472,19 @@ counthanging(void)
 	unsigned long long n = 0;
 	size_t e, i, k;
 
-	if (nverts == 0)
+	if (mesh.nverts == 0)
 		return 0;
 	byx = sortverts(0, &rankx);
 	byy = sortverts(1, &ranky);
-	hanging = xmalloc(nverts);
-	memset(hanging, 0, nverts);
-	for (e = 0; e < nelems; e++) {
-		size_t start = eoff[e], stop = eoff[e + 1];
+	hanging = xmalloc(mesh.nverts);
+	memset(hanging, 0, mesh.nverts);
+	for (e = 0; e < mesh.nelems; e++) {
+		size_t start = mesh.eoff[e], stop = mesh.eoff[e + 1];
 
 		for (i = start; i < stop; i++) {
-			uint32_t a = refs[i];
-			uint32_t b = refs[i + 1 < stop ? i + 1 : start];
-			struct point pa = verts[a], pb = verts[b];
+			uint32_t a = mesh.refs[i];
+			uint32_t b = mesh.refs[i + 1 < stop ? i + 1 : start];
+			struct point pa = mesh.verts[a], pb = mesh.verts[b];
 			const uint32_t *order;
 			uint32_t r0, r1;
 
@@ -487,7 +504,7 @@ counthanging(void)
 				r1 = t;
 			}
 			for (k = r0 + 1; k < r1; k++) {
-				struct point v = verts[order[k]];
+				struct point v = mesh.verts[order[k]];
 
 				/* not a copy of an end */
 				if (pa.x == pb.x ? between(v.y, pa.y, pb.y) :
@@ -496,7 +513,7 @@ counthanging(void)
 			}
 		}
 	}
-	for (i = 0; i < nverts; i++)
+	for (i = 0; i < mesh.nverts; i++)
 		n += hanging[i];
 	free(hanging);
 	free(byx);
@@ -530,30 +547,35 @@ putreal(const char *key, double v)
 	putkey(key, buf);
 }
 
-/* Area of the leaves of the given classes, exactly, as an expansion. */
+/*
+ * Area of the leaves of the given classes, exactly, as an expansion, in
+ * the tree cut at level cut: its leaves down to that level, and its nodes
+ * at that level, which count as partial leaves.
+ */
 static void
-leafarea(struct xsum *s, int withpartial)
+leafarea(struct xsum *s, int withpartial, int cut)
 {
 	int l;
 
-	for (l = 0; l <= deepest; l++) {
-		unsigned long long n = lev[l].leaves[F];
+	for (l = 0; l <= cut; l++) {
+		unsigned long long n = tree.lev[l].leaves[F];
 
 		if (withpartial)
-			n += lev[l].leaves[P];
+			n += tree.lev[l].leaves[P] +
+			    (l == cut ? tree.lev[l].nodes : 0);
 		if (n > 0)
-			xs_addprod3(s, ldexp((double)n, -2 * l), u.size,
-			    u.size);
+			xs_addprod3(s, ldexp((double)n, -2 * l), tree.u.size,
+			    tree.u.size);
 	}
 }
 
 /*
  * The centroid of the leaves, from the exact sums of 2 IX + 1: a leaf at
  * level l has its centre at X0 + (2 IX + 1) SIZE / 2^(l+1) and weight
- * 4^-l.
+ * 4^-l; in the tree cut at level cut.
  */
 static void
-leafcentroid(const char *kx, const char *ky, int withpartial)
+leafcentroid(double *cx, double *cy, int withpartial, int cut)
 {
 	struct xsum w, mx, my;
 	double sw;
@@ -562,8 +584,8 @@ leafcentroid(const char *kx, const char *ky, int withpartial)
 	xs_init(&w);
 	xs_init(&mx);
 	xs_init(&my);
-	for (l = 0; l <= deepest; l++) {
-		const struct levelstat *s = &lev[l];
+	for (l = 0; l <= cut; l++) {
+		const struct levelstat *s = &tree.lev[l];
 		double n = (double)s->leaves[F];
 		double sx = u128real(&s->sx[F]), sy = u128real(&s->sy[F]);
 
@@ -572,13 +594,18 @@ leafcentroid(const char *kx, const char *ky, int withpartial)
 			sx += u128real(&s->sx[P]);
 			sy += u128real(&s->sy[P]);
 		}
+		if (withpartial && l == cut) {
+			n += (double)s->nodes;
+			sx += u128real(&s->nodesx);
+			sy += u128real(&s->nodesy);
+		}
 		xs_add(&w, ldexp(n, -2 * l));
 		xs_add(&mx, ldexp(sx, -3 * l - 1));
 		xs_add(&my, ldexp(sy, -3 * l - 1));
 	}
 	sw = xs_round(&w);
-	putreal(kx, u.x0 + u.size * (xs_round(&mx) / sw));
-	putreal(ky, u.y0 + u.size * (xs_round(&my) / sw));
+	*cx = tree.u.x0 + tree.u.size * (xs_round(&mx) / sw);
+	*cy = tree.u.y0 + tree.u.size * (xs_round(&my) / sw);
 	xs_free(&w);
 	xs_free(&mx);
 	xs_free(&my);
@@ -593,7 +620,7 @@ relerr(const struct xsum *approx, double area)
 
 	xs_init(&d);
 	xs_addxs(&d, approx, 1);
-	xs_addxs(&d, &region.a2, -0.5);
+	xs_addxs(&d, &poly.region.a2, -0.5);
 	v = fabs(xs_round(&d)) / area;
 	xs_free(&d);
 	return v;
@@ -606,94 +633,216 @@ cmptype(const void *a, const void *b)
 	    ((const struct etype *)b)->name);
 }
 
-static void
-report(int table)
+/* Returns the polygon's area, 0 without rings. */
+static double
+polygonfigures(void)
 {
-	unsigned long long cells = 0, nodes = 0, leafn[3] = { 0, 0, 0 };
 	double area = 0, cx, cy;
-	char key[64];
-	size_t i;
-	int l, k;
 
-	putcount("rings", nrings);
-	putcount("holes", nholes);
-	if (nrings > 0) {
-		mo_result(&region, &area, &cx, &cy);
+	putcount("rings", poly.nrings);
+	putcount("holes", poly.nholes);
+	if (poly.nrings > 0) {
+		mo_result(&poly.region, &area, &cx, &cy);
 		putreal("polygon_area", area);
-		putreal("perimeter", perim + perimlow);
+		putreal("perimeter", poly.perim + poly.perimlow);
 		putreal("centroid_x", cx);
 		putreal("centroid_y", cy);
 	}
-	for (l = 0; l <= deepest; l++) {
-		nodes += lev[l].nodes;
-		for (k = 0; k < 3; k++)
-			leafn[k] += lev[l].leaves[k];
+	return area;
+}
+
+/* How deep the tree goes, what it saves on a uniform grid that deep. */
+static void
+depthfigures(unsigned long long leaves)
+{
+	double uniform = ldexp(1, 2 * tree.deepest);
+
+	putcount("deepest_level", tree.deepest);
+	if (tree.deepest <= 31)
+		putcount("uniform_cells", 1ULL << 2 * tree.deepest);
+	else
+		putreal("uniform_cells", uniform);
+	putreal("saving", (double)leaves / uniform);
+	/* the end of the stream closes the subtrees still open */
+	jumpleaf(NULL, 0);
+	putcount("max_level_jump", jump.max);
+}
+
+/* The full leaves, then the full and partial ones, against the polygon. */
+/*
+ * The figures of the leaves' area in the tree cut at level cut: area_full,
+ * area_full_partial, their relative errors (when the polygon has an
+ * area) and centroids (when the leaves have one).
+ */
+struct cutfigures {
+	double	af, afp, erf, erfp, cfx, cfy, cfpx, cfpy;
+	int	haveerr;
+};
+
+static void
+cutfigures(struct cutfigures *f, double area, int cut)
+{
+	struct xsum full, fullpart;
+
+	xs_init(&full);
+	xs_init(&fullpart);
+	leafarea(&full, 0, cut);
+	leafarea(&fullpart, 1, cut);
+	f->af = xs_round(&full);
+	f->afp = xs_round(&fullpart);
+	f->haveerr = area > 0;
+	if (f->haveerr) {
+		f->erf = relerr(&full, area);
+		f->erfp = relerr(&fullpart, area);
 	}
-	cells = nodes + leafn[F] + leafn[E] + leafn[P];
-	putcount("cells", cells);
+	if (f->af > 0)
+		leafcentroid(&f->cfx, &f->cfy, 0, cut);
+	if (f->afp > 0)
+		leafcentroid(&f->cfpx, &f->cfpy, 1, cut);
+	xs_free(&full);
+	xs_free(&fullpart);
+}
+
+static void
+leafareafigures(double area)
+{
+	struct cutfigures f;
+
+	cutfigures(&f, area, tree.deepest);
+	putreal("area_full", f.af);
+	putreal("area_full_partial", f.afp);
+	if (f.haveerr) {
+		putreal("area_full_relerr", f.erf);
+		putreal("area_full_partial_relerr", f.erfp);
+	}
+	if (f.af > 0) {
+		putreal("centroid_full_x", f.cfx);
+		putreal("centroid_full_y", f.cfy);
+	}
+	if (f.afp > 0) {
+		putreal("centroid_full_partial_x", f.cfpx);
+		putreal("centroid_full_partial_y", f.cfpy);
+	}
+}
+
+static void
+cellfigures(double area)
+{
+	unsigned long long nodes = 0, leafn[3] = { 0, 0, 0 }, leaves;
+	int l, k;
+
+	for (l = 0; l <= tree.deepest; l++) {
+		nodes += tree.lev[l].nodes;
+		for (k = 0; k < 3; k++)
+			leafn[k] += tree.lev[l].leaves[k];
+	}
+	leaves = leafn[F] + leafn[E] + leafn[P];
+	putcount("cells", nodes + leaves);
 	putcount("nodes", nodes);
-	putcount("leaves", leafn[F] + leafn[E] + leafn[P]);
+	putcount("leaves", leaves);
 	putcount("leaves_F", leafn[F]);
 	putcount("leaves_E", leafn[E]);
 	putcount("leaves_P", leafn[P]);
-	if (cells > 0) {
-		struct xsum full, fullpart;
-		double af, afp, uniform = ldexp(1, 2 * deepest);
-
-		putcount("deepest_level", deepest);
-		if (deepest <= 31)
-			putcount("uniform_cells", 1ULL << 2 * deepest);
-		else
-			putreal("uniform_cells", uniform);
-		putreal("saving", (double)(leafn[F] + leafn[E] + leafn[P]) /
-		    uniform);
-		jumpleaf(NULL, 0);
-		putcount("max_level_jump", maxjump);
-		xs_init(&full);
-		xs_init(&fullpart);
-		leafarea(&full, 0);
-		leafarea(&fullpart, 1);
-		af = xs_round(&full);
-		afp = xs_round(&fullpart);
-		putreal("area_full", af);
-		putreal("area_full_partial", afp);
-		if (area > 0) {
-			putreal("area_full_relerr", relerr(&full, area));
-			putreal("area_full_partial_relerr",
-			    relerr(&fullpart, area));
-		}
-		if (af > 0)
-			leafcentroid("centroid_full_x", "centroid_full_y", 0);
-		if (afp > 0)
-			leafcentroid("centroid_full_partial_x",
-			    "centroid_full_partial_y", 1);
-		xs_free(&full);
-		xs_free(&fullpart);
-	}
-	if (havemesh) {
-		unsigned long long quads = 0;
-
-		putcount("vertices", nverts);
-		putcount("elements", nelems);
-		qsort(types, ntypes, sizeof(*types), cmptype);
-		for (i = 0; i < ntypes; i++)
-			if (strcmp(types[i].name, "quad") == 0)
-				quads = types[i].n;
-		putcount("elements_quad", quads);
-		for (i = 0; i < ntypes; i++) {
-			if (strcmp(types[i].name, "quad") == 0)
-				continue;
-			snprintf(key, sizeof(key), "elements_%s",
-			    types[i].name);
-			putcount(key, types[i].n);
-		}
-		putcount("hanging_vertices", counthanging());
-	}
-	if (!table)
+	if (nodes + leaves == 0)
 		return;
+	depthfigures(leaves);
+	leafareafigures(area);
+}
+
+/* Elements by type, quads first, then the others by name. */
+/*
+ * The quality of the elements: the largest difference of vertex numbers
+ * within one (the bandwidth of the matrices a solver builds), the
+ * smallest interior angle in degrees, and the largest ratio of an
+ * element's longest side to its shortest.
+ */
+static void
+quality(void)
+{
+	unsigned long long band = 0;
+	double minangle = 180, maxratio = 1;
+	size_t e, i;
+
+	for (e = 0; e < mesh.nelems; e++) {
+		size_t start = mesh.eoff[e], n = mesh.eoff[e + 1] - start;
+		uint32_t lo = UINT32_MAX, hi = 0;
+		double shortest = INFINITY, longest = 0;
+
+		for (i = 0; i < n; i++) {
+			uint32_t a = mesh.refs[start + i];
+			uint32_t b = mesh.refs[start + (i + 1) % n];
+			uint32_t c = mesh.refs[start + (i + n - 1) % n];
+			struct point p = mesh.verts[a], q = mesh.verts[b];
+			struct point o = mesh.verts[c];
+			double ux = q.x - p.x, uy = q.y - p.y;
+			double vx = o.x - p.x, vy = o.y - p.y;
+			double len = hypot(ux, uy);
+			double angle = atan2(fabs(ux * vy - uy * vx),
+			    ux * vx + uy * vy) * (180 / 3.14159265358979323846);
+
+			lo = a < lo ? a : lo;
+			hi = a > hi ? a : hi;
+			shortest = fmin(shortest, len);
+			longest = fmax(longest, len);
+			minangle = fmin(minangle, angle);
+		}
+		if (hi - lo > band)
+			band = hi - lo;
+		if (shortest > 0)
+			maxratio = fmax(maxratio, longest / shortest);
+	}
+	putcount("bandwidth", band);
+	putreal("smallest_angle", minangle);
+	putreal("largest_aspect_ratio", maxratio);
+}
+
+static void
+meshfigures(void)
+{
+	unsigned long long quads = 0;
+	char key[64];
+	size_t i;
+
+	putcount("vertices", mesh.nverts);
+	putcount("elements", mesh.nelems);
+	qsort(mesh.types, mesh.ntypes, sizeof(*mesh.types), cmptype);
+	for (i = 0; i < mesh.ntypes; i++)
+		if (strcmp(mesh.types[i].name, "quad") == 0)
+			quads = mesh.types[i].n;
+	putcount("elements_quad", quads);
+	for (i = 0; i < mesh.ntypes; i++) {
+		if (strcmp(mesh.types[i].name, "quad") == 0)
+			continue;
+		snprintf(key, sizeof(key), "elements_%s", mesh.types[i].name);
+		putcount(key, mesh.types[i].n);
+	}
+	putcount("hanging_vertices", counthanging());
+	if (mesh.nelems > 0)
+		quality();
+}
+
+/* A real in a table: "-" for a figure that does not exist. */
+static void
+putcolumn(int have, double v)
+{
+	char buf[32];
+
+	printf(" %s", have ? (fmtreal(buf, v), buf) : "-");
+}
+
+/*
+ * The cells per level, then the figures of the tree cut at each level:
+ * the report's area and centroid at every level of precision.
+ */
+static void
+leveltable(double area)
+{
+	struct cutfigures f;
+	int l;
+
 	printf("# level cells nodes leaves leaves_F leaves_E leaves_P\n");
-	for (l = 0; l <= deepest; l++) {
-		const struct levelstat *s = &lev[l];
+	for (l = 0; l <= tree.deepest; l++) {
+		const struct levelstat *s = &tree.lev[l];
 		unsigned long long n = s->leaves[F] + s->leaves[E] +
 		    s->leaves[P];
 
@@ -701,14 +850,48 @@ report(int table)
 		    s->nodes + n, s->nodes, n, s->leaves[F], s->leaves[E],
 		    s->leaves[P]);
 	}
+	printf("# cut level leaves_F leaves_E leaves_P area_full "
+	    "area_full_partial area_full_relerr area_full_partial_relerr "
+	    "centroid_full_x centroid_full_y centroid_full_partial_x "
+	    "centroid_full_partial_y\n");
+	for (l = 0; l <= tree.deepest; l++) {
+		unsigned long long n[3] = { 0, 0, 0 };
+		int k, m;
+
+		for (m = 0; m <= l; m++)
+			for (k = 0; k < 3; k++)
+				n[k] += tree.lev[m].leaves[k];
+		n[P] += tree.lev[l].nodes;
+		cutfigures(&f, area, l);
+		printf("cut %d %llu %llu %llu", l, n[F], n[E], n[P]);
+		putcolumn(1, f.af);
+		putcolumn(1, f.afp);
+		putcolumn(f.haveerr, f.erf);
+		putcolumn(f.haveerr, f.erfp);
+		putcolumn(f.af > 0, f.cfx);
+		putcolumn(f.af > 0, f.cfy);
+		putcolumn(f.afp > 0, f.cfpx);
+		putcolumn(f.afp > 0, f.cfpy);
+		printf("\n");
+	}
+}
+
+static void
+report(int table)
+{
+	double area = polygonfigures();
+
+	cellfigures(area);
+	if (mesh.present)
+		meshfigures();
+	if (table)
+		leveltable(area);
 }
 
 int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	FILE *fp;
-	const char *name;
 	int ch, table = 0, verbose = 0;
 
 	setprogname_(argv[0]);
@@ -728,10 +911,9 @@ main(int argc, char *argv[])
 	if (argc > 1)
 		usage();
 
-	mo_init(&region);
-	mo_init(&ringmo);
-	fp = openin(argc == 1 ? argv[0] : "-", &name);
-	r = qt_open(fp, name,
+	mo_init(&poly.region);
+	mo_init(&poly.ring);
+	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    verbose ? QT_VERBOSE : 0);
 	readstream(r);
 	qt_close(r);

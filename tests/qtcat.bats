@@ -1,0 +1,279 @@
+#!/usr/bin/env bats
+# qtcat: shards of a tree joined again, byte for byte the single run;
+# inputs of other polygons, repeated leaves and missing shards refused with
+# file and line; -u's subsets against awk's sums over the same leaves.
+
+load test_helper
+
+# The trees, the shards and the tops, made once: the amoeba at level 8 and
+# the triangle (0,0) (2,0) (0,2) at level 6, which has full and empty
+# leaves at levels 1 and 2.  top-K.qt holds the cells of the levels below
+# K; topfe-K.qt those and the full and empty leaves at level K; topn-K.qt
+# every cell of the levels to K, the shards' roots too.  S-K/ holds a shard for every cell
+# at level K, P-K/ one for every node there.
+setup_file() {
+	cd "$BATS_FILE_TMPDIR" || return 1
+	polyread "$SAMPLES/amoeba.brep" > amoeba.qt
+	printf '0 0\n2 0\n0 2\n' | polyread -l 6 > tri.qt
+	for t in amoeba tri; do
+		qtsplit -l 8 $t.qt > $t-whole.qt
+		for k in 1 2; do
+			mkdir -p $t-S-$k $t-P-$k
+			for p in $(awk -v k=$k '($1 == "node" || $1 == "leaf") &&
+			    $3 == k { print $2 }' $t-whole.qt); do
+				qtsplit -l 8 -r $p $t.qt > $t-S-$k/$p.qt
+			done
+			for p in $(awk -v k=$k '$1 == "node" && $3 == k {
+			    print $2 }' $t-whole.qt); do
+				cp $t-S-$k/$p.qt $t-P-$k/
+			done
+			awk -v k=$k '($1 == "node" || $1 == "leaf") &&
+			    $3 >= k { next } 1' $t-whole.qt |
+			    qtcat -u > $t-top-$k.qt
+			awk -v k=$k '($1 == "node" || $1 == "leaf") &&
+			    ($3 > k || $3 == k && $1 == "node") { next } 1' \
+			    $t-whole.qt | qtcat -u > $t-topfe-$k.qt
+			awk -v k=$k '($1 == "node" || $1 == "leaf") &&
+			    $3 > k { next } 1' $t-whole.qt |
+			    qtcat -u > $t-topn-$k.qt
+		done
+	done
+}
+
+# The whole tree of $1 (amoeba or tri), which every join must give.
+whole() {
+	echo "$BATS_FILE_TMPDIR/$1-whole.qt"
+}
+
+@test "a shard for every cell at level 1, and the root, join into the single run" {
+	for t in amoeba tri; do
+		d=$BATS_FILE_TMPDIR
+		[ "$(ls $d/$t-S-1 | wc -l)" -eq 4 ]
+		qtcat $d/$t-top-1.qt $d/$t-S-1/*.qt > out.qt
+		diff -u "$(whole $t)" out.qt
+	done
+}
+
+@test "a shard for every cell at level 2, and the cells above, join into the single run" {
+	for t in amoeba tri; do
+		d=$BATS_FILE_TMPDIR
+		qtcat $d/$t-top-2.qt $d/$t-S-2/*.qt > out.qt
+		diff -u "$(whole $t)" out.qt
+	done
+}
+
+@test "shards of the partial cells and a top with the full and empty leaves join" {
+	d=$BATS_FILE_TMPDIR
+	# the triangle's cut has full and empty leaves at both levels
+	[ "$(awk '$1 == "leaf" && $3 == 2' $d/tri-topfe-2.qt | wc -l)" -gt 0 ]
+	[ "$(ls $d/tri-P-2 | wc -l)" -lt "$(ls $d/tri-S-2 | wc -l)" ]
+	for t in amoeba tri; do
+		for k in 1 2; do
+			qtcat $d/$t-topfe-$k.qt $d/$t-P-$k/*.qt > out.qt
+			diff -u "$(whole $t)" out.qt
+		done
+	done
+}
+
+@test "a node given in the top and in its shard is written once" {
+	d=$BATS_FILE_TMPDIR
+	for t in amoeba tri; do
+		qtcat $d/$t-topn-2.qt $d/$t-P-2/*.qt > out.qt
+		diff -u "$(whole $t)" out.qt
+	done
+}
+
+@test "the order of the operands does not matter" {
+	d=$BATS_FILE_TMPDIR
+	qtcat $(ls -r $d/tri-P-2/*.qt) $d/tri-topfe-2.qt > out.qt
+	diff -u "$(whole tri)" out.qt
+}
+
+@test "one whole stream comes out as it went in" {
+	run -0 bash -c 'qtcat "$1" | cmp - "$1"' _ "$(whole amoeba)"
+	run -0 bash -c 'qtcat - < "$1" | cmp - "$1"' _ "$(whole amoeba)"
+}
+
+@test "another universe is refused with both files and lines" {
+	d=$BATS_FILE_TMPDIR
+	printf '0 0\n2 0\n0 2\n' | polyread -l 6 -u 0,0,4 | qtsplit -l 8 -r 0 > 0.qt
+	run -1 --separate-stderr qtcat $d/tri-top-1.qt 0.qt $d/tri-S-1/[123].qt
+	[ "$stderr" = "qtcat: 0.qt:2: another universe: universe 0 0 4, where $d/tri-top-1.qt:2 has universe 0 0 2" ]
+	[[ "$output" != *end* ]]
+}
+
+@test "another level is refused with both files and lines" {
+	d=$BATS_FILE_TMPDIR
+	qtsplit -l 7 -r 0 $d/tri.qt > 0.qt
+	run -1 --separate-stderr qtcat $d/tri-top-1.qt 0.qt $d/tri-S-1/[123].qt
+	[ "$stderr" = "qtcat: 0.qt:3: another level: level 7, where $d/tri-top-1.qt:3 has level 8" ]
+}
+
+@test "another polygon is refused at the vertex where the rings part" {
+	d=$BATS_FILE_TMPDIR
+	printf '0 0\n2 0\n0 1.5\n' | polyread -l 6 -u 0,0,2 | qtsplit -l 8 -r 0 > 0.qt
+	run -1 --separate-stderr qtcat $d/tri-top-1.qt 0.qt $d/tri-S-1/[123].qt
+	[ "$stderr" = "qtcat: 0.qt:7: another polygon: ring 1 differs from $d/tri-top-1.qt:7" ]
+}
+
+@test "a head without the level record is another polygon" {
+	d=$BATS_FILE_TMPDIR
+	grep -v '^level' $d/tri-S-1/0.qt | qtcat -u > 0.qt
+	run -1 --separate-stderr qtcat $d/tri-top-1.qt 0.qt
+	[ "$stderr" = "qtcat: 0.qt:3: another polygon: a ring record where $d/tri-top-1.qt:3 has a level record" ]
+}
+
+@test "a leaf given twice is refused with both places" {
+	d=$BATS_FILE_TMPDIR
+	# the top with the first leaf of shard 0 in it as well
+	{ cat $d/tri-top-1.qt; grep -m 1 '^leaf' $d/tri-S-1/0.qt; } |
+	    qtcat -u > top.qt
+	n=$(grep -n '^leaf' top.qt | cut -d: -f1)
+	m=$(grep -n '^leaf' $d/tri-S-1/0.qt | head -n 1 | cut -d: -f1)
+	leaf=$(awk '$1 == "leaf" { print $2 }' top.qt)
+	run -1 --separate-stderr qtcat top.qt $d/tri-S-1/*.qt
+	[ "$stderr" = "qtcat: $d/tri-S-1/0.qt:$m: cell $leaf given twice: also at top.qt:$n" ]
+	[[ "$output" != *end* ]]
+}
+
+@test "a missing shard is refused, naming the missing cell" {
+	d=$BATS_FILE_TMPDIR
+	mkdir s && cp $d/amoeba-S-2/*.qt s/ && rm s/21.qt
+	n=$(grep -n '^node 22 ' s/22.qt | cut -d: -f1)
+	m=$(grep -n '^leaf 2033 ' s/20.qt | cut -d: -f1)
+	run -1 --separate-stderr qtcat $d/amoeba-top-2.qt s/*.qt
+	[ "$stderr" = "qtcat: s/22.qt:$n: cell 21 is missing: cell 22 comes after cell 2033 (s/20.qt:$m)" ]
+}
+
+@test "the last shard missing is refused at the last cell" {
+	d=$BATS_FILE_TMPDIR
+	n=$(grep -n '^leaf 23 ' $d/tri-S-1/2.qt | cut -d: -f1)
+	run -1 --separate-stderr qtcat $d/tri-top-1.qt $d/tri-S-1/[012].qt
+	[ "$stderr" = "qtcat: $d/tri-S-1/2.qt:$n: cell 3 is missing: the cells end at cell 23" ]
+}
+
+@test "shards without the cells above them are refused" {
+	d=$BATS_FILE_TMPDIR
+	run -1 --separate-stderr qtcat $d/tri-S-1/*.qt
+	[ "$stderr" = "qtcat: $d/tri-S-1/1.qt:8: cell 1 lies outside the tree under cell 0 ($d/tri-S-1/0.qt:8), the first cell: the cells above it are missing" ]
+}
+
+@test "a coarser tree is not the top: its partial leaves are the shards' nodes" {
+	d=$BATS_FILE_TMPDIR
+	run -1 --separate-stderr bash -c 'qtsplit -l 1 "$1" | qtcat - "$2"/*.qt' _ $d/tri.qt $d/tri-S-1
+	[[ "$stderr" == "qtcat: $d/tri-S-1/0.qt:3: another level: level 8, where stdin:3 has level 1" ]]
+}
+
+@test "-u: a shard missing, the cells given come out sealed and readable" {
+	d=$BATS_FILE_TMPDIR
+	run -0 bash -c 'qtcat -u "$1"/tri-top-1.qt "$1"/tri-S-1/[013].qt |
+	    qtstats | grep "^leaves"' _ "$d"
+	expected=$(cat $d/tri-top-1.qt $d/tri-S-1/[013].qt | leafcounts |
+	    awk '{ s += $2; print "leaves_" $1, $2 } END { print "leaves", s }' |
+	    sort)
+	diff -u <(echo "$expected") <(echo "$output" | sort)
+}
+
+# What awk sums over the leaves of a stream, in qtstats's keys.
+awksums() {
+	awk '$1 == "leaf" { n++; c[$9]++; if ($9 == "F") a += $8 * $8 }
+	    END { printf "leaves %d\nleaves_F %d\nleaves_E %d\nleaves_P %d\n" \
+	    "area_full %.17g\n", n, c["F"], c["E"], c["P"], a }'
+}
+
+# The same keys from qtstats, area_full as awk prints it.
+statsums() {
+	qtstats | awk '$1 ~ /^leaves/ { print } $1 == "area_full" {
+	    printf "area_full %.17g\n", $2 }'
+}
+
+@test "-u: grep without the empty leaves gives awk's figures" {
+	w=$(whole tri)
+	grep -v ' E$' "$w" > cut.txt
+	diff -u <(awksums < cut.txt) <(qtcat -u < cut.txt | statsums)
+	[ "$(awksums < cut.txt | grep leaves_E)" = "leaves_E 0" ]
+}
+
+@test "-u: the head of a stream gives awk's figures" {
+	w=$(whole tri)
+	head -n 40 "$w" > cut.txt
+	[ "$(grep -c '^leaf' cut.txt)" -gt 10 ]
+	diff -u <(awksums < cut.txt) <(qtcat -u < cut.txt | statsums)
+}
+
+@test "-u: cells sorted in reverse give awk's figures and preorder" {
+	w=$(whole tri)
+	{ awk '$1 == "node" || $1 == "leaf" { exit } 1' "$w"
+	  grep -E '^(leaf|node) ' "$w" | grep -v ' F$' | sort -r; } > cut.txt
+	diff -u <(awksums < cut.txt) <(qtcat -u < cut.txt | statsums)
+	# in preorder again: the stream's own order without the full leaves
+	diff -u <(grep -v ' F$' "$w" | grep -E '^(leaf|node) ') \
+	    <(qtcat -u < cut.txt | grep -E '^(leaf|node) ')
+}
+
+@test "-u: the qtree line and end records anywhere, an end counting anything" {
+	w=$(whole tri)
+	{ echo 'end 3'; grep -v '^qtree' "$w" | sed '8a\
+qtree 1'; echo 'end 0'; } > cut.txt
+	run -0 bash -c 'qtcat -u < cut.txt | cmp - "$1"' _ "$w"
+}
+
+@test "without -u an unsealed input is refused" {
+	w=$(whole tri)
+	run -1 --separate-stderr bash -c 'head -n 40 "$1" | qtcat' _ "$w"
+	[ "$stderr" = "qtcat: stdin:40: truncated stream: no end record" ]
+	run -1 --separate-stderr bash -c 'sed "s/^end .*/end 5/" "$1" | qtcat' _ "$w"
+	[[ "$stderr" == "qtcat: stdin:"*": end record counts 5 records, "* ]]
+	run -1 --separate-stderr bash -c 'grep -v " E$" "$1" | qtcat' _ "$w"
+	[[ "$stderr" == "qtcat: stdin:"*": cell "*" is missing: "* ]]
+}
+
+@test "-u: a leaf given twice, or inside a leaf, is refused" {
+	w=$(whole tri)
+	leaf=$(grep -m 1 '^leaf' "$w")
+	run -1 --separate-stderr bash -c '{ cat "$1"; echo "$2"; } | qtcat -u' _ "$w" "$leaf"
+	n=$(grep -n -m 1 '^leaf' "$w" | cut -d: -f1)
+	[[ "$stderr" == "qtcat: stdin:"*": cell ${leaf:5:1} given twice: also at stdin:$n" ]]
+	run -1 --separate-stderr bash -c '{ cat "$1"; echo "leaf 00 2 0 0 0 0 0.5 F"; } | qtcat -u' _ "$w"
+	[[ "$stderr" == *": cell 00 lies inside leaf 0 (stdin:$n)" ]]
+}
+
+@test "-u: a whole stream through sort is refused: cells before the universe" {
+	w=$(whole tri)
+	run -1 --separate-stderr bash -c 'sort "$1" | qtcat -u' _ "$w"
+	[[ "$stderr" == "qtcat: stdin:"*": leaf record before the universe record" ]]
+}
+
+@test "records of unknown kinds among cells are written where they come" {
+	w=$(whole tri)
+	awk '$1 == "end" { $2++ } 1; /^leaf 0 / { print "note after 0" }' \
+	    "$w" > in.qt
+	qtcat in.qt > out.qt
+	diff -u in.qt out.qt
+	[ "$(grep -A 1 '^leaf 0 ' out.qt | tail -n 1)" = "note after 0" ]
+}
+
+@test "a mesh is refused; a bad option is a usage error" {
+	w=$(whole tri)
+	run -1 --separate-stderr bash -c 'qtleaves -n "$1" | qtcat -u' _ "$w"
+	[[ "$stderr" == "qtcat: stdin:"*": the input holds a mesh (vertex record): qtcat joins trees" ]]
+	run -2 --separate-stderr qtcat -x
+	[ "${stderr_lines[-1]}" = "usage: qtcat [-u] [file ...]" ]
+	run -2 --separate-stderr qtcat - - < "$w"
+}
+
+@test "qtcat(1): the examples print what the page says" {
+	cp "$SAMPLES/amoeba.brep" .
+	script=$(sed -n '/^\.Sh EXAMPLES/,/^\.Sh SEE ALSO/p' "$TOP/man/qtcat.1" |
+	    awk '/^\.Bd/ { on = 1; next } /^\.Ed/ { on = 0 } on' |
+	    sed 's/samples\/amoeba.brep/amoeba.brep/')
+	# the page's commands, $ lines and their continuations, run in order
+	cmds=$(echo "$script" | awk '/^\$ / { sub(/^\$ /, ""); print; next }
+	    /^    / { sub(/^    /, ""); print }')
+	want=$(echo "$script" | awk '/^\$ / { c = 1; next }
+	    /^    / && c { next } { c = 0; print }')
+	run -0 --separate-stderr bash -c "$cmds"
+	got=$(printf '%s\n%s\n' "$output" "$stderr" | grep -v '^$')
+	diff -u <(echo "$want" | sort) <(echo "$got" | sort)
+	[ "$(echo "$want" | grep -c '^same$')" -eq 3 ]
+}

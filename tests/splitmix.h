@@ -1,0 +1,15 @@
+/*
+ * splitmix.h: splitmix64, a full-period 64-bit generator, enough to
+ * spread the test programs' inputs; the same sequence on every machine.
+ */
+static uint64_t rngstate = 12345;
+
+static uint64_t
+rnd(void)
+{
+	uint64_t z = (rngstate += 0x9e3779b97f4a7c15);
+
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111eb;
+	return z ^ (z >> 31);
+}

@@ -1,0 +1,529 @@
+/*
+ * qtcat: join qtree(5) streams of one polygon into one stream, cells in
+ * preorder: the shards of a tree made apart (qtsplit -r) back into the
+ * tree, or, with -u, what is left of streams after lines were removed or
+ * reordered, sealed again.
+ *
+ * Every input's head, the records before its first cell, must be the first
+ * input's, line for line; it is written once, as read.  Without -u the
+ * inputs are sealed streams, each in preorder, so a k-way merge by cell
+ * order (a heap of the inputs by their current cell) writes the union in
+ * preorder as it reads, holding one cell an input; the cells must then
+ * make one whole tree, which the merge checks cell by cell: each is the
+ * one that preorder puts after the last.  With -u the cells are held,
+ * sorted and written: any order, any subset.  Either way a cell comes once,
+ * except a node, which shards may share.
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "qtree.h"
+
+struct input {
+	const char	*name;
+	struct qtreader	*r;
+	struct qtrec	 rec;	/* the current cell */
+	int		 done;
+};
+
+/* A cell held under -u: what qt_cell needs, and where it was read. */
+struct heldcell {
+	uint64_t	 ix, iy;
+	unsigned long long id;
+	long		 lineno;
+	int		 input;
+	unsigned char	 level;
+	char		 class;
+};
+
+static struct input *in;
+static int nin, unsealed;
+
+/* The first input's head, to compare and write. */
+static struct qtrec **head;
+static size_t nhead, headcap;
+
+/* The last cell written, and the first: the tree's root. */
+struct written {
+	char		 path[QT_MAXLEVEL + 1];
+	int		 level;
+	char		 class;
+	const char	*name;
+	long		 lineno;
+	int		 have;
+};
+static struct written last, root;
+
+static struct heldcell *held;
+static size_t nheld, heldcap;
+
+static void
+usage(void)
+{
+	fprintf(stderr, "usage: qtcat [-u] [file ...]\n");
+	exit(2);
+}
+
+static const char *
+pathname(const char *path, int level)
+{
+	return level > 0 ? path : ".";
+}
+
+/* The word that names a record of the head in messages. */
+static const char *
+recword(const struct qtrec *rec, char *buf, size_t size)
+{
+	size_t n;
+
+	switch (rec->kind) {
+	case QT_UNIVERSE:
+		return "universe";
+	case QT_LEVEL:
+		return "level";
+	case QT_RING:
+		return "ring";
+	default:
+		n = strcspn(rec->line, " ");
+		snprintf(buf, size, "%.*s", (int)(n < 40 ? n : 40), rec->line);
+		return buf;
+	}
+}
+
+/*
+ * Refuses the head record rec of input p (NULL where p's head ends, at
+ * its first cell or the end of its input, line) unless it is the first
+ * input's j-th record, byte for byte.
+ */
+static void
+samehead(const struct input *p, size_t j, const struct qtrec *rec, long line)
+{
+	const struct qtrec *h = j < nhead ? head[j] : NULL;
+	const char *a, *b;
+	char wa[48], wb[48];
+	long la, lb;
+	size_t k;
+
+	if (rec != NULL && h != NULL && h->len == rec->len &&
+	    memcmp(h->line, rec->line, rec->len) == 0)
+		return;
+	if (rec == NULL && h == NULL)
+		return;
+	if (rec == NULL)
+		errat(p->name, line, "another polygon: the head ends here, "
+		    "where %s:%ld has a %s record", in[0].name, h->lineno,
+		    recword(h, wa, sizeof(wa)));
+	if (h == NULL)
+		errat(p->name, rec->lineno, "another polygon: a %s record "
+		    "after the head of %s", recword(rec, wa, sizeof(wa)),
+		    in[0].name);
+	if (rec->kind != h->kind || (rec->kind == QT_OTHER &&
+	    strcmp(recword(rec, wa, sizeof(wa)), recword(h, wb, sizeof(wb)))))
+		errat(p->name, rec->lineno, "another polygon: a %s record "
+		    "where %s:%ld has a %s record",
+		    recword(rec, wa, sizeof(wa)), in[0].name, h->lineno,
+		    recword(h, wb, sizeof(wb)));
+	switch (rec->kind) {
+	case QT_UNIVERSE:
+		errat(p->name, rec->lineno, "another universe: %.*s, where "
+		    "%s:%ld has %.*s", (int)rec->len, rec->line, in[0].name,
+		    h->lineno, (int)h->len, h->line);
+		break;
+	case QT_LEVEL:
+		errat(p->name, rec->lineno, "another level: %.*s, where "
+		    "%s:%ld has %.*s", (int)rec->len, rec->line, in[0].name,
+		    h->lineno, (int)h->len, h->line);
+		break;
+	case QT_RING:
+		/* the line where the two rings part */
+		la = rec->lineno;
+		lb = h->lineno;
+		for (k = 0, a = rec->line, b = h->line;
+		    k < rec->len && k < h->len && a[k] == b[k]; k++)
+			if (a[k] == '\n')
+				la++, lb++;
+		errat(p->name, la, "another polygon: ring %ld differs from "
+		    "%s:%ld", rec->ring.id, in[0].name, lb);
+		break;
+	default:
+		errat(p->name, rec->lineno, "another polygon: %s record "
+		    "differs from %s:%ld", recword(rec, wa, sizeof(wa)),
+		    in[0].name, h->lineno);
+		break;
+	}
+}
+
+/*
+ * The next record of input p that is a cell, into p->rec; records of
+ * other kinds between cells are written as met.  Returns 0 at the end.
+ */
+static int
+nextcell(struct input *p)
+{
+	enum qtkind kind;
+
+	for (;;) {
+		switch (kind = qt_read(p->r, &p->rec)) {
+		case QT_EOF:
+			qt_close(p->r);
+			p->done = 1;
+			return 0;
+		case QT_NODE:
+		case QT_LEAF:
+			return 1;
+		case QT_VERTEX:
+		case QT_ELEM:
+			qt_fail(p->r, "the input holds a mesh (%s record): "
+			    "qtcat joins trees",
+			    kind == QT_ELEM ? "elem" : "vertex");
+			break;
+		default:	/* the reader refuses a head record after cells */
+			qt_echo(&p->rec);
+			break;
+		}
+	}
+}
+
+/*
+ * Reads input p's head, up to its first cell: the first input's is kept,
+ * every other one compared with it.
+ */
+static void
+readhead(struct input *p)
+{
+	struct qtrec rec;
+	enum qtkind kind;
+	size_t j = 0;
+	long line = 0;
+
+	while ((kind = qt_read(p->r, &rec)) != QT_EOF) {
+		if (kind == QT_NODE || kind == QT_LEAF)
+			break;
+		if (kind == QT_VERTEX || kind == QT_ELEM)
+			qt_fail(p->r, "the input holds a mesh (%s record): "
+			    "qtcat joins trees",
+			    kind == QT_ELEM ? "elem" : "vertex");
+		if (p == in) {
+			if (nhead == headcap) {
+				headcap = headcap ? 2 * headcap : 16;
+				head = xreallocarray(head, headcap,
+				    sizeof(*head));
+			}
+			head[nhead++] = qt_keep(&rec);
+			if (kind == QT_UNIVERSE)
+				qt_setuniverse(&rec.u);
+		} else
+			samehead(p, j, &rec, 0);
+		line = rec.lineno + (long)rec.nrec - 1;
+		j++;
+	}
+	if (kind == QT_EOF) {
+		p->done = 1;
+		qt_close(p->r);
+	} else
+		p->rec = rec;
+	if (p != in)
+		samehead(p, j, NULL, kind == QT_EOF ? line : rec.lineno);
+}
+
+/*
+ * The cell that preorder puts after the last one in a whole tree under
+ * the first: the last's first child when it is a node, else the next
+ * sibling of the last or of its nearest ancestor below the root that has
+ * one.  Its path goes to want; returns its level, -1 when the tree is
+ * whole.
+ */
+static int
+wanted(char *want)
+{
+	int j;
+
+	if (last.class == 0) {
+		memcpy(want, last.path, last.level);
+		want[last.level] = '0';
+		return last.level + 1;
+	}
+	for (j = last.level; j > root.level && last.path[j - 1] == '3'; j--)
+		;
+	if (j == root.level)
+		return -1;
+	memcpy(want, last.path, j);
+	want[j - 1]++;
+	return j;
+}
+
+/*
+ * Whether cell c is the one that wanted would name, without building it:
+ * returns the length of the path it shares with the last cell, -1 when
+ * it is another cell.
+ */
+static int
+follows(const struct cell *c)
+{
+	int j = c->level, k;
+
+	if (last.class == 0)
+		return j == last.level + 1 && c->path[j - 1] == '0' &&
+		    memcmp(c->path, last.path, j - 1) == 0 ? j - 1 : -1;
+	if (j > last.level || j <= root.level ||
+	    c->path[j - 1] != last.path[j - 1] + 1)
+		return -1;
+	for (k = j; k < last.level; k++)
+		if (last.path[k] != '3')
+			return -1;
+	return memcmp(c->path, last.path, j - 1) == 0 ? j - 1 : -1;
+}
+
+/*
+ * Refuses cell c, read from name at lineno, which is not the one that
+ * the tree's preorder puts after the last cell; returns whether to write
+ * it (-u), 0 to drop it (a node given again).
+ */
+static int
+misfit(const struct cell *c, const char *name, long lineno)
+{
+	char want[QT_MAXLEVEL + 1];
+	int n;
+
+	if (c->level == last.level &&
+	    memcmp(c->path, last.path, c->level) == 0) {
+		if (c->class == 0 && last.class == 0)
+			return 0;
+		errat(name, lineno, "cell %s given twice: also at %s:%ld",
+		    c->path, last.name, last.lineno);
+	}
+	if (last.class != 0 && c->level > last.level &&
+	    memcmp(c->path, last.path, last.level) == 0)
+		errat(name, lineno, "cell %s lies inside leaf %s (%s:%ld)",
+		    c->path, pathname(last.path, last.level), last.name,
+		    last.lineno);
+	if (unsealed)
+		return 1;
+	if ((n = wanted(want)) < 0)
+		errat(name, lineno, "cell %s lies outside the tree under cell "
+		    "%s (%s:%ld), the first cell: the cells above it are "
+		    "missing", c->path, pathname(root.path, root.level),
+		    root.name, root.lineno);
+	errat(name, lineno, "cell %.*s is missing: cell %s comes after cell "
+	    "%s (%s:%ld)", n, want, c->path, pathname(last.path, last.level),
+	    last.name, last.lineno);
+	return 0;
+}
+
+/*
+ * Writes cell c, read from name at lineno, which comes after the last one
+ * in preorder or is it: a node given again is written once.
+ */
+static void
+putcell(const struct cell *c, const char *name, long lineno)
+{
+	int k = 0;
+
+	if (last.have && (k = follows(c)) < 0) {
+		if (!misfit(c, name, lineno))
+			return;
+		k = 0;
+	}
+	qt_cell(c, c->id);
+	memcpy(last.path + k, c->path + k, c->level - k);
+	last.path[c->level] = '\0';
+	last.level = c->level;
+	last.class = c->class;
+	last.name = name;
+	last.lineno = lineno;
+	if (!last.have)
+		root = last;
+	last.have = 1;
+}
+
+/* At the end of the merge, the tree must be whole. */
+static void
+endtree(void)
+{
+	char want[QT_MAXLEVEL + 1];
+	int n;
+
+	if (!last.have || unsealed || (n = wanted(want)) < 0)
+		return;
+	errat(last.name, last.lineno, "cell %.*s is missing: the cells end "
+	    "at cell %s", n, want, pathname(last.path, last.level));
+}
+
+/* The heap of inputs by current cell, an earlier input first on a tie. */
+static int
+before(const struct input *a, const struct input *b)
+{
+	int d = cellcmp(&a->rec.c, &b->rec.c);
+
+	return d < 0 || (d == 0 && a < b);
+}
+
+static void
+siftdown(struct input **h, int n, int i)
+{
+	struct input *p = h[i];
+	int k;
+
+	while ((k = 2 * i + 1) < n) {
+		if (k + 1 < n && before(h[k + 1], h[k]))
+			k++;
+		if (!before(h[k], p))
+			break;
+		h[i] = h[k];
+		i = k;
+	}
+	h[i] = p;
+}
+
+/* Streams of sealed inputs: a k-way merge, one cell an input held. */
+static void
+merge(void)
+{
+	struct input **h = xreallocarray(NULL, nin, sizeof(*h));
+	struct input *p;
+	int n = 0, i;
+
+	for (i = 0; i < nin; i++)
+		if (!in[i].done)
+			h[n++] = &in[i];
+	for (i = n / 2 - 1; i >= 0; i--)
+		siftdown(h, n, i);
+	while (n > 0) {
+		p = h[0];
+		putcell(&p->rec.c, p->name, p->rec.lineno);
+		if (!nextcell(p))
+			h[0] = h[--n];
+		siftdown(h, n, 0);
+	}
+	free(h);
+}
+
+static void
+hold(const struct input *p)
+{
+	const struct cell *c = &p->rec.c;
+	struct heldcell *k;
+
+	if (nheld == heldcap) {
+		heldcap = heldcap ? 2 * heldcap : 4096;
+		held = xreallocarray(held, heldcap, sizeof(*held));
+	}
+	k = &held[nheld++];
+	k->ix = c->ix;
+	k->iy = c->iy;
+	k->id = c->id;
+	k->lineno = p->rec.lineno;
+	k->input = p - in;
+	k->level = c->level;
+	k->class = c->class;
+}
+
+static int
+heldcmp(const void *va, const void *vb)
+{
+	const struct heldcell *a = va, *b = vb;
+	struct cell ca, cb;
+	int d;
+
+	ca.level = a->level;
+	ca.ix = a->ix;
+	ca.iy = a->iy;
+	cb.level = b->level;
+	cb.ix = b->ix;
+	cb.iy = b->iy;
+	if ((d = cellcmp(&ca, &cb)) != 0)
+		return d;
+	if (a->input != b->input)
+		return a->input < b->input ? -1 : 1;
+	return (a->lineno > b->lineno) - (a->lineno < b->lineno);
+}
+
+/* Unsealed inputs: every cell held, sorted, then written. */
+static void
+sortcells(void)
+{
+	char path[QT_MAXLEVEL + 1];
+	struct cell c;
+	size_t i;
+	int i0, k;
+
+	for (i0 = 0; i0 < nin; i0++)
+		if (!in[i0].done)
+			do
+				hold(&in[i0]);
+			while (nextcell(&in[i0]));
+	qsort(held, nheld, sizeof(*held), heldcmp);
+	memset(&c, 0, sizeof(c));
+	for (i = 0; i < nheld; i++) {
+		c.level = held[i].level;
+		c.ix = held[i].ix;
+		c.iy = held[i].iy;
+		c.class = held[i].class;
+		c.id = held[i].id;
+		for (k = 0; k < c.level; k++) {
+			int b = c.level - 1 - k;
+
+			path[k] = '0' + (int)((c.ix >> b & 1) |
+			    (c.iy >> b & 1) << 1);
+		}
+		path[c.level] = '\0';
+		c.path = pathname(path, c.level);
+		putcell(&c, in[held[i].input].name, held[i].lineno);
+	}
+	free(held);
+}
+
+int
+main(int argc, char *argv[])
+{
+	static char *stdinonly[] = { "-", NULL };
+	FILE *fp;
+	size_t j;
+	int ch, i, nstdin = 0;
+
+	setprogname_(argv[0]);
+	while ((ch = getopt(argc, argv, "u")) != -1)
+		switch (ch) {
+		case 'u':
+			unsealed = 1;
+			break;
+		default:
+			usage();
+		}
+	argc -= optind;
+	argv += optind;
+	if (argc == 0) {
+		argc = 1;
+		argv = stdinonly;
+	}
+
+	nin = argc;
+	in = xreallocarray(NULL, nin, sizeof(*in));
+	memset(in, 0, nin * sizeof(*in));
+	for (i = 0; i < nin; i++) {
+		if (strcmp(argv[i], "-") == 0 && nstdin++ > 0)
+			die(2, "the standard input (-) named twice");
+		fp = openin(argv[i], &in[i].name);
+		in[i].r = qt_open(fp, in[i].name,
+		    QT_NEEDUNIVERSE | (unsealed ? QT_UNSEALED : 0));
+		readhead(&in[i]);
+	}
+	qt_header();
+	for (j = 0; j < nhead; j++) {
+		qt_echo(head[j]);
+		qt_free(head[j]);
+	}
+	free(head);
+	if (unsealed)
+		sortcells();
+	else
+		merge();
+	endtree();
+	free(in);
+	qt_end();
+	closeout();
+	return 0;
+}
