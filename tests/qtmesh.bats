@@ -267,6 +267,8 @@ EOF
 	a=$(qtmesh tree.qt | awk "$bw")
 	b=$(qtmesh -r tree.qt | awk "$bw")
 	[ "$b" -lt $((a / 3)) ]
+	# qtstats measures it the same way
+	[ "$(qtmesh -r tree.qt | qtstats | awk '$1 == "bandwidth" { print $2 }')" = "$b" ]
 	run -0 --separate-stderr qtmesh -r -v tree.qt
 	[[ "$stderr" == *"bandwidth $b, $a before renumbering"* ]]
 	run -0 --separate-stderr qtmesh -r tree.qt
