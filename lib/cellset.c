@@ -157,3 +157,11 @@ cellnext(int level, uint64_t ix, uint64_t iy, int dx, int dy, uint64_t *nx,
 	*ny = iy + dy;
 	return 1;
 }
+
+/* Room for n cells in all without growing, for a caller that knows. */
+void
+cellset_reserve(struct cellset *s, size_t n)
+{
+	while (2 * n > s->cap)
+		grow(s);
+}

@@ -91,9 +91,25 @@ struct cellset *cellset_new(void);
 void	 cellset_free(struct cellset *);
 size_t	 cellset_count(const struct cellset *);
 void	 cellset_put(struct cellset *, int, uint64_t, uint64_t, char);
+void	 cellset_reserve(struct cellset *, size_t);
 int	 cellset_get(const struct cellset *, int, uint64_t, uint64_t);
 int	 cellset_above(const struct cellset *, int, uint64_t, uint64_t);
 int	 cellnext(int, uint64_t, uint64_t, int, int, uint64_t *, uint64_t *);
+
+/*
+ * corner.c: a mesh's vertices as integer points of the grid at level
+ * QT_GRID, numbered 1, 2, ... in order of first use by cells meshed in
+ * preorder; corners_at says where the current cell starts, which lets the
+ * points behind it go.  corners_find gives 0 for a point not numbered.
+ */
+struct corners *corners_new(void);
+void	 corners_free(struct corners *);
+void	 corners_at(struct corners *, uint64_t, uint64_t);
+uint32_t corners_id(struct corners *, uint64_t, uint64_t);
+uint32_t corners_find(const struct corners *, uint64_t, uint64_t);
+size_t	 corners_count(const struct corners *);
+void	 corners_point(const struct corners *, uint32_t, uint64_t *,
+	    uint64_t *);
 
 /*
  * read.c: the qtree(5) reader.  It checks every record against qtree(5)
@@ -180,6 +196,7 @@ void	 qt_cell(const struct cell *, unsigned long long);
 void	 qt_gridvertex(unsigned long long, int, uint64_t, uint64_t);
 void	 qt_elem(unsigned long long, const char *, size_t,
 	    const unsigned long long *);
+void	 qt_hang(unsigned long long, unsigned long long, unsigned long long);
 void	 qt_echo(const struct qtrec *);
 struct qtrec *qt_keep(const struct qtrec *);
 void	 qt_free(struct qtrec *);

@@ -249,6 +249,22 @@ qt_elem(unsigned long long id, const char *type, size_t n,
 	recorded(p);
 }
 
+/* Hanging vertex v, the midpoint of vertices a and b. */
+void
+qt_hang(unsigned long long v, unsigned long long a, unsigned long long b)
+{
+	char *p = room(96);
+
+	memcpy(p, "hang ", 5);
+	p = fmtint(p + 5, (long long)v);
+	*p++ = ' ';
+	p = fmtint(p, (long long)a);
+	*p++ = ' ';
+	p = fmtint(p, (long long)b);
+	*p++ = '\n';
+	recorded(p);
+}
+
 /* A record as read: a ring with its v records, anything else alone. */
 void
 qt_echo(const struct qtrec *rec)

@@ -23,7 +23,7 @@ saved=tests/regress
 save=0
 [ "${1:-}" = -s ] && save=1
 
-for p in polyread qtsplit qtleaves qtstats qt2svg qtcat; do
+for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh; do
 	[ -x "./$p" ] || { echo "regress: build first (make)" >&2; exit 2; }
 done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/regress.XXXXXX") || exit 2
@@ -66,6 +66,13 @@ cases() {
 		echo "$b.qt2svg-nN|polyread $f | qtsplit -l 3 | qtleaves -n | qt2svg -n -N"
 		echo "$b.qt2svg-n|polyread $f | qtsplit -l 3 | qtleaves | qt2svg -n"
 		echo "$b.qt2svg-v|polyread $f | qtsplit -l 6 | qt2svg -v 2>&1 >/dev/null"
+		echo "$b.qtmesh|polyread $f | qtsplit -m 3 -l 4 | qtmesh"
+		echo "$b.qtmesh-HcFEP|polyread $f | qtsplit -m 3 -l 4 | qtmesh -H -c FEP"
+		echo "$b.qtmesh-rT|polyread $f | qtsplit -m 3 -l 4 | qtmesh -r -T -c F"
+		echo "$b.qtmesh-msh|polyread $f | qtsplit -m 3 -l 4 | qtmesh -f msh"
+		echo "$b.qtmesh-vtk|polyread $f | qtsplit -m 3 -l 4 | qtmesh -f vtk"
+		echo "$b.qtmesh-triangle|w=\$(mktemp -d) && polyread $f | qtsplit -m 3 -l 4 | qtmesh -f triangle -o \$w/t && cat \$w/t.node \$w/t.ele; rm -rf \$w"
+		echo "$b.qtmesh-unbalanced|polyread $f | qtsplit -l 6 | qtmesh -v"
 		echo "$b.qtcat|polyread $f | qtsplit -l 6 | qtcat"
 		echo "$b.qtcat-u|polyread $f | qtsplit -l 6 | grep -v ' E\$' | qtcat -u"
 		echo "$b.qtcat-shards|$shards $f"
@@ -85,6 +92,8 @@ cases() {
 	echo "amoeba13.qtleaves-n|polyread samples/amoeba.brep | qtsplit -l 13 | qtleaves -n | cksum"
 	echo "amoeba16.qtstats|polyread samples/amoeba.brep | qtsplit -l 16 | qtstats -l"
 	echo "amoeba13.qtstats-mesh|polyread samples/amoeba.brep | qtsplit -l 13 | qtleaves -n | qtstats"
+	echo "amoeba13.qtmesh|polyread samples/amoeba.brep | qtsplit -m 12 -l 13 | qtmesh | cksum"
+	echo "amoeba13.qtmesh-r|polyread samples/amoeba.brep | qtsplit -m 12 -l 13 | qtmesh -r -f msh | cksum"
 	echo "amoeba13.qt2svg|polyread samples/amoeba.brep | qtsplit -l 13 | qt2svg | cksum"
 	echo "amoeba30.qtsplit-r|polyread samples/amoeba.brep | qtsplit -l 30 -r 1203012 | cksum"
 	# Every bad input through every program that reads its kind.

@@ -1,8 +1,10 @@
 #!/bin/sh
 # bench.sh: time polyread and qtsplit on generated polygons, and qtleaves,
-# qtstats and qt2svg on the largest level-16 stream, and qtcat merging two
-# shards of it against cat | wc -l, print a table and the targets of issue
-# 3 (and 17's of qtcat) with their figures, and draw samples/bench.svg.
+# qtstats and qt2svg on the largest level-16 stream, qtcat merging two
+# shards of it against cat | wc -l, and qtmesh on a balanced level-16 tree
+# (elements/s in the cells_per_s column), print a table and the targets of
+# issue 3 (and 17's of qtcat, 10's of qtmesh) with their figures, and draw
+# samples/bench.svg.
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
@@ -321,6 +323,25 @@ if [ -n "$big" ]; then
 	rm -f "$tmp/big.qt"
 fi
 
+# qtmesh on a balanced level-16 tree: uniform at level 15 with its partial
+# cells split once more, below the level-5 cell of the amoeba's tenth
+# partial leaf (qtsplit -r), about 10^6 elements; until qtbalance exists,
+# a tree whose leaves span two levels is the balanced input at hand.
+if [ -x ./qtmesh ]; then
+	./polyread samples/amoeba.brep >"$tmp/amoeba.qt"
+	p=$(./qtsplit -l 5 "$tmp/amoeba.qt" |
+	    awk '$1 == "leaf" && $9 == "P" && ++n == 10 { print $2 }')
+	./qtsplit -m 15 -l 16 -r "$p" "$tmp/amoeba.qt" >"$tmp/mesh16.qt"
+	peak ./qtmesh "$tmp/mesh16.qt" >"$tmp/mesh16.out" ||
+		die "qtmesh failed"
+	mem=$(rss)
+	ne=$(grep -c '^elem ' "$tmp/mesh16.out")
+	rm -f "$tmp/mesh16.out"
+	t=$(timeit 3 "./qtmesh $tmp/mesh16.qt")
+	row amoeba - 16 qtmesh "$ne" "$t" "$mem"
+	rm -f "$tmp/mesh16.qt"
+fi
+
 # Shards over GNU parallel -j 2 against a single run, and what limits it.
 echo
 sh tools/benchshards.sh
@@ -417,6 +438,14 @@ END {
 		skip(name)
 	else
 		verdict(name, sprintf("%d KB", m), m < 65536 ? "PASS" : "FAIL")
+
+	k = "amoeba - 16 qtmesh"
+	name = "qtmesh, balanced level 16, >= 1 M elements/s"
+	if (has(k))
+		verdict(name, sprintf("%.3g M elem/s", cells[k] / sec[k] / 1e6),
+		    cells[k] / sec[k] >= 1e6 ? "PASS" : "FAIL")
+	else
+		skip(name)
 
 	n = split("qtleaves qtstats qt2svg", tool, " ")
 	for (l = 16; l >= 6; l--)

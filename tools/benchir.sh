@@ -50,5 +50,11 @@ for p in qtleaves "qtleaves -n" qtstats qt2svg; do
 	row "$p star14" "$(ir "$dir/"$p "$tmp/star14.qt")" "$nr"
 done
 nr=$(records "$tmp/mesh14.qt")
+if [ -x "$dir/qtmesh" ]; then
+	# a balanced tree, levels 9 and 10: records are the mesh's elements
+	"$dir/qtsplit" -m 9 -l 10 "$tmp/amoeba.qt" > "$tmp/bal10.qt"
+	ne=$("$dir/qtmesh" "$tmp/bal10.qt" | grep -c '^elem ')
+	row "qtmesh amoeba9-10" "$(ir "$dir/qtmesh" "$tmp/bal10.qt")" "$ne"
+fi
 row "qtstats mesh14" "$(ir "$dir/qtstats" "$tmp/mesh14.qt")" "$nr"
 row "qt2svg mesh14" "$(ir "$dir/qt2svg" "$tmp/mesh14.qt")" "$nr"

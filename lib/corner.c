@@ -1,0 +1,177 @@
+/*
+ * The vertices of a mesh of cells, numbered 1, 2, ... in order of first
+ * use, as integer points of the grid at level QT_GRID: two corners are one
+ * vertex exactly when they are the same point.
+ *
+ * Cells are meshed in preorder, which is Z order of their lower left
+ * corners, and a cell can use only points of its closed square, none of
+ * them before its lower left corner in Z order (Z order is monotone in
+ * each coordinate).  So once the cell being meshed starts after a point in
+ * Z order, that point is never asked for again: the table of live points
+ * drops it when it next grows, and stays as small as the front of the
+ * sweep.  What is kept for good is each vertex's grid point, 16 bytes.
+ */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "qtree.h"
+
+struct live {
+	uint64_t	x, y;
+	uint32_t	id;	/* 0: a free slot */
+};
+
+struct corners {
+	struct live	*live;	/* open addressing, at most half full */
+	size_t		 cap, n;
+	uint64_t	 atx, aty;	/* the lower left of the current cell */
+	uint64_t	(*pt)[2];	/* grid point of vertex i + 1 */
+	size_t		 npt, ptcap;
+};
+
+/* Is (ax, ay) before (bx, by) in Z order, y the higher bit of a digit? */
+static int
+zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
+{
+	uint64_t dx = ax ^ bx, dy = ay ^ by;
+
+	if (dy < dx && dy < (dx ^ dy))	/* x's highest difference is higher */
+		return ax < bx;
+	return ay < by;
+}
+
+/*
+ * Grid points of coarse cells end in many zero bits, which a product
+ * keeps: the high bits are folded down before the slot is taken.
+ */
+static size_t
+slotof(const struct corners *t, uint64_t x, uint64_t y)
+{
+	uint64_t h = x ^ y * UINT64_C(0x9E3779B97F4A7C15);
+
+	h ^= h >> 33;
+	h *= UINT64_C(0xFF51AFD7ED558CCD);
+	h ^= h >> 33;
+	return h & (t->cap - 1);
+}
+
+static void
+put(struct corners *t, const struct live *v)
+{
+	size_t k;
+
+	for (k = slotof(t, v->x, v->y); t->live[k].id != 0;
+	    k = (k + 1) & (t->cap - 1))
+		;
+	t->live[k] = *v;
+	t->n++;
+}
+
+/* A new table without the points behind the sweep, room for as many. */
+static void
+rebuild(struct corners *t)
+{
+	struct live *old = t->live;
+	size_t oldcap = t->cap, i, keep = 0;
+
+	for (i = 0; i < oldcap; i++)
+		if (old[i].id != 0 &&
+		    !zbefore(old[i].x, old[i].y, t->atx, t->aty))
+			keep++;
+	t->cap = 1024;
+	while (4 * (keep + 1) > t->cap)
+		t->cap *= 2;
+	t->live = xreallocarray(NULL, t->cap, sizeof(*t->live));
+	memset(t->live, 0, t->cap * sizeof(*t->live));
+	t->n = 0;
+	for (i = 0; i < oldcap; i++)
+		if (old[i].id != 0 &&
+		    !zbefore(old[i].x, old[i].y, t->atx, t->aty))
+			put(t, &old[i]);
+	free(old);
+}
+
+struct corners *
+corners_new(void)
+{
+	struct corners *t = xmalloc(sizeof(*t));
+
+	memset(t, 0, sizeof(*t));
+	rebuild(t);
+	return t;
+}
+
+void
+corners_free(struct corners *t)
+{
+	if (t != NULL) {
+		free(t->live);
+		free(t->pt);
+	}
+	free(t);
+}
+
+/* The cell being meshed now starts at grid point (x, y). */
+void
+corners_at(struct corners *t, uint64_t x, uint64_t y)
+{
+	t->atx = x;
+	t->aty = y;
+}
+
+/* The number of the vertex at grid point (x, y); a new one is numbered. */
+uint32_t
+corners_id(struct corners *t, uint64_t x, uint64_t y)
+{
+	struct live v;
+	size_t k;
+
+	if (2 * (t->n + 1) > t->cap)
+		rebuild(t);
+	for (k = slotof(t, x, y); t->live[k].id != 0;
+	    k = (k + 1) & (t->cap - 1))
+		if (t->live[k].x == x && t->live[k].y == y)
+			return t->live[k].id;
+	if (t->npt == UINT32_MAX)
+		die(1, "more than %lu vertices", (unsigned long)UINT32_MAX);
+	if (t->npt == t->ptcap) {
+		t->ptcap = t->ptcap ? 2 * t->ptcap : 1024;
+		t->pt = xreallocarray(t->pt, t->ptcap, sizeof(*t->pt));
+	}
+	t->pt[t->npt][0] = x;
+	t->pt[t->npt][1] = y;
+	v.x = x;
+	v.y = y;
+	v.id = ++t->npt;
+	put(t, &v);
+	return v.id;
+}
+
+/* The number of the vertex at (x, y) if it has one and is live, else 0. */
+uint32_t
+corners_find(const struct corners *t, uint64_t x, uint64_t y)
+{
+	size_t k;
+
+	for (k = slotof(t, x, y); t->live[k].id != 0;
+	    k = (k + 1) & (t->cap - 1))
+		if (t->live[k].x == x && t->live[k].y == y)
+			return t->live[k].id;
+	return 0;
+}
+
+size_t
+corners_count(const struct corners *t)
+{
+	return t->npt;
+}
+
+/* The grid point of vertex id, from 1. */
+void
+corners_point(const struct corners *t, uint32_t id, uint64_t *x,
+    uint64_t *y)
+{
+	*x = t->pt[id - 1][0];
+	*y = t->pt[id - 1][1];
+}

@@ -1,0 +1,1080 @@
+/*
+ * qtmesh: the kept leaves of a qtree(5) tree as a finite-element mesh.
+ * Vertices are leaf corners, compared exactly as integer points of the
+ * grid at level QT_MAXLEVEL (G), numbered in order of first use as the
+ * elements come (leaves in preorder); elements run counter-clockwise.
+ *
+ * A vertex that lies inside a side of a larger leaf hangs.  On a tree
+ * balanced 2:1 among its kept leaves a side holds at most one, its
+ * midpoint, and a leaf with hanging sides is replaced by a template of
+ * triangles and quads between its corners and those midpoints, no new
+ * vertex inside (the default, conforming), or kept whole with the
+ * midpoint listed as hanging between the side's ends (-H).
+ *
+ * The leaves are read whole into a cell set with their ancestors, so that
+ * each side finds what lies across it in a few probes: the cell of the
+ * same size there is a kept leaf (the side is shared), a node (finer
+ * leaves: their midpoint hangs, or the tree is not balanced), or absent
+ * (a larger leaf, or nothing: the boundary).
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "qtree.h"
+
+#define GRID	QT_MAXLEVEL
+
+enum { S, E, N, W };	/* sides, counter-clockwise from the south */
+enum { QTREE, MSH, VTK, TRIANGLE };
+
+static const char *const sidename[4] = { "south", "east", "north", "west" };
+static const int dirx[4] = { 0, 1, 0, -1 }, diry[4] = { -1, 0, 1, 0 };
+/* the children of the cell across side k that touch it, in its direction */
+static const int kidx[4][2] = { { 0, 1 }, { 0, 0 }, { 1, 0 }, { 1, 1 } };
+static const int kidy[4][2] = { { 1, 1 }, { 0, 1 }, { 0, 0 }, { 1, 0 } };
+
+/*
+ * Templates, by the hanging sides of a leaf turned to start from the
+ * south.  Points of a leaf are numbered counter-clockwise from the lower
+ * left corner: 0 lower left, 1 south midpoint, 2 lower right, 3 east
+ * midpoint, 4 upper right, 5 north midpoint, 6 upper left, 7 west
+ * midpoint; the template of mask m turned by r sides uses point p + 2r.
+ */
+struct shape {
+	int	n;	/* 3 or 4 points */
+	int	p[4];
+};
+
+static const struct tmpl {
+	int		mask;
+	int		nel;
+	struct shape	el[5];
+} tmpls[] = {
+	{ 0, 1, { { 4, { 0, 2, 4, 6 } } } },
+	{ 1, 3, { { 3, { 0, 1, 6 } }, { 3, { 1, 2, 4 } }, { 3, { 1, 4, 6 } } } },
+	{ 3, 4, { { 3, { 0, 1, 6 } }, { 3, { 1, 2, 3 } }, { 3, { 1, 3, 6 } },
+	    { 3, { 3, 4, 6 } } } },
+	{ 5, 2, { { 4, { 0, 1, 5, 6 } }, { 4, { 1, 2, 4, 5 } } } },
+	{ 7, 4, { { 4, { 0, 1, 5, 6 } }, { 3, { 1, 2, 3 } }, { 3, { 3, 4, 5 } },
+	    { 3, { 1, 3, 5 } } } },
+	{ 15, 5, { { 3, { 0, 1, 7 } }, { 3, { 1, 2, 3 } }, { 3, { 3, 4, 5 } },
+	    { 3, { 5, 6, 7 } }, { 4, { 1, 3, 5, 7 } } } },
+};
+
+static struct {
+	const struct tmpl	*t;
+	int			 turn;
+} bymask[16];
+
+/* A kept leaf: 32 bytes. */
+struct leaf {
+	uint64_t	 ix, iy;
+	long		 lineno;
+	unsigned char	 level, class;
+	unsigned char	 hang;	/* bit k: side k's midpoint hangs */
+	unsigned char	 bnd;	/* bits 2k, 2k+1: side k's halves on the boundary */
+	unsigned char	 nel;	/* its elements, consecutive */
+};
+
+struct elem {
+	uint32_t	v[4];	/* v[3] == 0 for a triangle */
+};
+
+struct hang {
+	uint32_t	v, a, b;	/* v == 0 until its vertex is numbered */
+	uint64_t	x, y;		/* grid point of v */
+};
+
+struct seg {			/* a side on the boundary, a to b */
+	uint32_t	a, b;	/* 0: the midpoint of hang h */
+	uint32_t	h;
+};
+
+static char keep[256];
+static int conform = 1, alltri, renumber, verbose, format = QTREE;
+static const char *outbase, *inname;
+static struct universe u;
+
+static struct leaf *leaves;
+static size_t nleaves, leafcap;
+static struct cellset *set;
+
+static struct corners *vt;
+static struct elem *elems;
+static size_t nelems, elemcap;
+static struct hang *hangs;
+static size_t nhangs, hangcap;
+static struct seg *segs;
+static size_t nsegs, segcap;
+static uint32_t *perm;	/* new number of vertex i + 1, with -r */
+
+/* Hanging midpoints not numbered yet: grid point to hang index + 1. */
+static struct pend {
+	uint64_t	x, y;
+	uint32_t	h;	/* 0: free */
+} *pend;
+static size_t npend, pendcap;
+
+static void
+usage(void)
+{
+	fprintf(stderr, "usage: qtmesh [-HrTv] [-c classes] [-f format] "
+	    "[-o basename] [file]\n");
+	exit(2);
+}
+
+static void *
+grow(void *p, size_t *cap, size_t n, size_t size)
+{
+	if (n < *cap)
+		return p;
+	*cap = *cap ? 2 * *cap : 1024;
+	return xreallocarray(p, *cap, size);
+}
+
+static void
+setclasses(const char *s)
+{
+	if (*s == '\0')
+		die(2, "-c: no classes given (a string of F, E and P)");
+	memset(keep, 0, sizeof(keep));
+	for (; *s != '\0'; s++) {
+		if (*s != 'F' && *s != 'E' && *s != 'P')
+			die(2, "-c: unknown class %c (F, E or P)", *s);
+		keep[(unsigned char)*s] = 1;
+	}
+}
+
+static int
+turnmask(int m, int r)
+{
+	return (m << r | m >> (4 - r)) & 15;
+}
+
+static void
+inittemplates(void)
+{
+	size_t i;
+	int r;
+
+	for (i = 0; i < sizeof(tmpls) / sizeof(tmpls[0]); i++)
+		for (r = 3; r >= 0; r--) {
+			bymask[turnmask(tmpls[i].mask, r)].t = &tmpls[i];
+			bymask[turnmask(tmpls[i].mask, r)].turn = r;
+		}
+}
+
+static char *
+cellpath(char *path, int level, uint64_t ix, uint64_t iy)
+{
+	int d;
+
+	if (level == 0)
+		return strcpy(path, ".");
+	for (d = 0; d < level; d++) {
+		int b = level - 1 - d;
+
+		path[d] = '0' + (int)(2 * (iy >> b & 1) + (ix >> b & 1));
+	}
+	path[level] = '\0';
+	return path;
+}
+
+/* The ancestors of the leaf before, which are in the set. */
+static struct {
+	uint64_t	x, y;
+	int		ok;
+} lastanc[GRID + 1];
+
+static void
+addleaf(const struct qtrec *rec)
+{
+	const struct cell *c = &rec->c;
+	struct leaf *l;
+
+	leaves = grow(leaves, &leafcap, nleaves, sizeof(*leaves));
+	l = &leaves[nleaves++];
+	l->ix = c->ix;
+	l->iy = c->iy;
+	l->level = c->level;
+	l->class = c->class;
+	l->lineno = rec->lineno;
+	l->hang = l->bnd = l->nel = 0;
+}
+
+/* A kept leaf, into the set with the ancestors it does not have yet. */
+static void
+setleaf(const struct leaf *l)
+{
+	uint64_t x = l->ix, y = l->iy;
+	int level;
+
+	cellset_put(set, l->level, x, y, l->class);
+	/* in preorder the leaf before most often has the same parent */
+	for (level = l->level - 1; level >= 0; level--) {
+		x >>= 1;
+		y >>= 1;
+		if (lastanc[level].ok && lastanc[level].x == x &&
+		    lastanc[level].y == y)
+			break;
+		lastanc[level].ok = 1;
+		lastanc[level].x = x;
+		lastanc[level].y = y;
+		if (cellset_get(set, level, x, y) >= 0)
+			break;
+		cellset_put(set, level, x, y, 0);
+	}
+}
+
+/*
+ * Does a kept leaf in the cell across side k touch that side?  The set
+ * holds the kept leaves and their ancestors only: a node has kept leaves
+ * below it, an absent cell none.
+ */
+static int
+touches(int level, uint64_t x, uint64_t y, int k)
+{
+	int c = cellset_get(set, level, x, y), h;
+
+	if (c != 0)
+		return c > 0;
+	for (h = 0; h < 2 && level < GRID; h++)
+		if (touches(level + 1, 2 * x + kidx[k][h], 2 * y + kidy[k][h],
+		    k))
+			return 1;
+	return 0;
+}
+
+static void
+unbalanced(const struct leaf *l, int k)
+{
+	char path[GRID + 2];
+
+	errat(inname, l->lineno, "leaf %s: kept leaves two or more levels "
+	    "finer touch its %s side: the tree is not 2:1 balanced "
+	    "(qtbalance balances it)",
+	    cellpath(path, l->level, l->ix, l->iy), sidename[k]);
+}
+
+/*
+ * Is cell (level, x, y) a kept leaf a few places from leaf i in preorder?
+ * A sibling that is a leaf is, and then the set is not asked.
+ */
+static int
+nearby(size_t i, int level, uint64_t x, uint64_t y)
+{
+	size_t j, lo = i > 3 ? i - 3 : 0, hi = i + 3 < nleaves ? i + 3 :
+	    nleaves - 1;
+
+	for (j = lo; j <= hi; j++)
+		if (leaves[j].level == level && leaves[j].ix == x &&
+		    leaves[j].iy == y)
+			return 1;
+	return 0;
+}
+
+/* What lies across each side of a leaf: hanging midpoints and boundary. */
+static void
+sides(size_t i)
+{
+	struct leaf *l = &leaves[i];
+	uint64_t nx, ny, cx, cy;
+	int k, h, c, a, level = l->level;
+
+	for (k = 0; k < 4; k++) {
+		if (!cellnext(level, l->ix, l->iy, dirx[k], diry[k], &nx,
+		    &ny)) {
+			l->bnd |= 3 << 2 * k;
+			continue;
+		}
+		if (nearby(i, level, nx, ny))
+			continue;
+		c = cellset_get(set, level, nx, ny);
+		if (c > 0)
+			continue;
+		if (c < 0) {	/* a larger kept leaf or nothing */
+			a = cellset_above(set, level, nx, ny);
+			if (a < 0 || cellset_get(set, a, nx >> (level - a),
+			    ny >> (level - a)) == 0)
+				l->bnd |= 3 << 2 * k;
+			continue;
+		}
+		for (h = 0; h < 2; h++) {
+			cx = 2 * nx + kidx[k][h];
+			cy = 2 * ny + kidy[k][h];
+			c = cellset_get(set, level + 1, cx, cy);
+			if (c > 0)
+				l->hang |= 1 << k;
+			else if (c == 0 && touches(level + 1, cx, cy, k))
+				unbalanced(l, k);
+			else
+				l->bnd |= 1 << (2 * k + h);
+		}
+	}
+}
+
+static size_t
+pendslot(uint64_t x, uint64_t y)
+{
+	uint64_t h = x ^ y * UINT64_C(0x9E3779B97F4A7C15);
+	size_t k;
+
+	h ^= h >> 33;
+	h *= UINT64_C(0xFF51AFD7ED558CCD);
+	h ^= h >> 33;
+	for (k = h & (pendcap - 1); pend[k].h != 0;
+	    k = (k + 1) & (pendcap - 1))
+		if (pend[k].x == x && pend[k].y == y)
+			break;
+	return k;
+}
+
+static void
+pendput(uint64_t x, uint64_t y, uint32_t h)
+{
+	struct pend *old = pend;
+	size_t i, oldcap = pendcap;
+
+	if (2 * (npend + 1) > pendcap) {
+		pendcap = oldcap ? 2 * oldcap : 1024;
+		pend = xreallocarray(NULL, pendcap, sizeof(*pend));
+		memset(pend, 0, pendcap * sizeof(*pend));
+		for (i = 0; i < oldcap; i++)
+			if (old[i].h != 0)
+				pend[pendslot(old[i].x, old[i].y)] = old[i];
+		free(old);
+	}
+	i = pendslot(x, y);
+	pend[i].x = x;
+	pend[i].y = y;
+	pend[i].h = h;
+	npend++;
+}
+
+/* A vertex, numbered now if new; a new one may be a hanging midpoint. */
+static uint32_t
+vertex(uint64_t x, uint64_t y)
+{
+	size_t before = corners_count(vt);
+	uint32_t id = corners_id(vt, x, y);
+	size_t k;
+
+	if (npend > 0 && id > before) {
+		k = pendslot(x, y);
+		if (pend[k].h != 0)
+			hangs[pend[k].h - 1].v = id;
+	}
+	return id;
+}
+
+/* The grid points of a leaf: corners and side midpoints, as in tmpls. */
+static void
+leafpoints(const struct leaf *l, uint64_t px[8], uint64_t py[8])
+{
+	int shift = GRID - l->level;	/* at level G no midpoint hangs */
+	uint64_t s = UINT64_C(1) << shift, x = l->ix << shift,
+	    y = l->iy << shift;
+
+	px[0] = px[6] = px[7] = x;
+	px[1] = px[5] = x + s / 2;
+	px[2] = px[3] = px[4] = x + s;
+	py[0] = py[1] = py[2] = y;
+	py[3] = py[7] = y + s / 2;
+	py[4] = py[5] = py[6] = y + s;
+}
+
+static void
+addelem(const uint64_t *x, const uint64_t *y, int n, const int *p,
+    struct leaf *l)
+{
+	struct elem *e;
+	int i, k, lo = 0;
+
+	/* from the lowest point, then leftmost: one spelling per element */
+	for (i = 1; i < n; i++)
+		if (y[p[i]] < y[p[lo]] ||
+		    (y[p[i]] == y[p[lo]] && x[p[i]] < x[p[lo]]))
+			lo = i;
+	if (n == 4 && alltri) {	/* along the diagonal from the lowest */
+		int t1[3], t2[3];
+
+		for (i = 0; i < 3; i++) {
+			t1[i] = p[(lo + i) % 4];
+			t2[i] = p[(lo + (i ? i + 1 : 0)) % 4];
+		}
+		addelem(x, y, 3, t1, l);
+		addelem(x, y, 3, t2, l);
+		return;
+	}
+	elems = grow(elems, &elemcap, nelems, sizeof(*elems));
+	e = &elems[nelems++];
+	e->v[3] = 0;
+	for (k = 0; k < n; k++)
+		e->v[k] = vertex(x[p[(lo + k) % n]], y[p[(lo + k) % n]]);
+	l->nel++;
+}
+
+static void
+addseg(uint32_t a, uint32_t b, uint32_t h)
+{
+	segs = grow(segs, &segcap, nsegs, sizeof(*segs));
+	segs[nsegs].a = a;
+	segs[nsegs].b = b;
+	segs[nsegs].h = h;
+	nsegs++;
+}
+
+/* The elements of a leaf, its hanging vertices and its boundary. */
+static void
+meshleaf(struct leaf *l)
+{
+	uint64_t px[8], py[8];
+	uint32_t id[8], h = 0;
+	const struct tmpl *t;
+	int i, k, r, q[4];
+
+	leafpoints(l, px, py);
+	corners_at(vt, px[0], py[0]);
+	t = conform ? bymask[l->hang].t : bymask[0].t;
+	r = conform ? bymask[l->hang].turn : 0;
+	for (i = 0; i < t->nel; i++) {
+		for (k = 0; k < t->el[i].n; k++)
+			q[k] = (t->el[i].p[k] + 2 * r) % 8;
+		addelem(px, py, t->el[i].n, q, l);
+	}
+	for (k = 0; k < 8; k += 2)
+		id[k] = corners_find(vt, px[k], py[k]);
+	for (k = 0; k < 4; k++) {
+		int m = 2 * k + 1, b = (2 * k + 2) % 8;
+
+		id[m] = 0;
+		if (l->hang & 1 << k) {
+			id[m] = corners_find(vt, px[m], py[m]);
+			if (!conform) {
+				hangs = grow(hangs, &hangcap, nhangs,
+				    sizeof(*hangs));
+				hangs[nhangs].v = id[m];
+				hangs[nhangs].a = id[2 * k];
+				hangs[nhangs].b = id[b];
+				hangs[nhangs].x = px[m];
+				hangs[nhangs].y = py[m];
+				h = ++nhangs;
+				if (id[m] == 0)
+					pendput(px[m], py[m], h);
+			}
+		}
+		if (format != MSH && format != TRIANGLE)
+			continue;
+		if ((l->bnd >> 2 * k & 3) == 3 && !(l->hang & 1 << k))
+			addseg(id[2 * k], id[b], 0);
+		else {
+			if (l->bnd & 1 << 2 * k)
+				addseg(id[2 * k], id[m], h);
+			if (l->bnd & 2 << 2 * k)
+				addseg(id[m], id[b], h);
+		}
+	}
+}
+
+static void
+resolve(void)
+{
+	size_t i;
+
+	for (i = 0; i < nhangs; i++)
+		if (hangs[i].v == 0)
+			die(1, "internal error: hanging vertex not met");
+	for (i = 0; i < nsegs; i++) {
+		if (segs[i].a == 0)
+			segs[i].a = hangs[segs[i].h - 1].v;
+		if (segs[i].b == 0)
+			segs[i].b = hangs[segs[i].h - 1].v;
+	}
+}
+
+static int
+nverts(const struct elem *e)
+{
+	return e->v[3] ? 4 : 3;
+}
+
+/* The largest difference of vertex numbers within an element. */
+static uint32_t
+bandwidth(void)
+{
+	uint32_t bw = 0, lo, hi, v;
+	size_t i;
+	int k;
+
+	for (i = 0; i < nelems; i++) {
+		lo = hi = perm[elems[i].v[0] - 1];
+		for (k = 1; k < nverts(&elems[i]); k++) {
+			v = perm[elems[i].v[k] - 1];
+			lo = v < lo ? v : lo;
+			hi = v > hi ? v : hi;
+		}
+		bw = hi - lo > bw ? hi - lo : bw;
+	}
+	return bw;
+}
+
+/*
+ * Reverse Cuthill-McKee: breadth first from a pseudo-peripheral vertex of
+ * each connected part (George and Liu: the vertex of least degree in the
+ * last level, while that lengthens the search), neighbours taken by
+ * increasing degree, the order then reversed.  Vertices are neighbours
+ * when an element holds both.
+ */
+static uint32_t *adj, *adjoff, *deg;
+
+static void
+buildgraph(size_t nv)
+{
+	size_t i, n;
+	uint32_t *fill, a, b, w, j, k, lo;
+	int p, q;
+
+	adjoff = xreallocarray(NULL, nv + 1, sizeof(*adjoff));
+	fill = xreallocarray(NULL, nv + 1, sizeof(*fill));
+	memset(adjoff, 0, (nv + 1) * sizeof(*adjoff));
+	for (i = 0; i < nelems; i++)
+		for (p = 0; p < nverts(&elems[i]); p++)
+			adjoff[elems[i].v[p]] += nverts(&elems[i]) - 1;
+	for (i = 1; i <= nv; i++)
+		adjoff[i] += adjoff[i - 1];
+	adj = xreallocarray(NULL, adjoff[nv] + 1, sizeof(*adj));
+	memcpy(fill, adjoff, (nv + 1) * sizeof(*fill));
+	for (i = 0; i < nelems; i++)
+		for (p = 0; p < nverts(&elems[i]); p++)
+			for (q = 0; q < nverts(&elems[i]); q++)
+				if (p != q) {
+					a = elems[i].v[p] - 1;
+					b = elems[i].v[q] - 1;
+					adj[fill[a]++] = b;
+				}
+	/* each list sorted and without repeats, packed to the left */
+	deg = xreallocarray(NULL, nv, sizeof(*deg));
+	w = 0;
+	for (i = 0; i < nv; i++) {
+		lo = adjoff[i];
+		n = adjoff[i + 1] - lo;
+		for (j = 1; j < n; j++)	/* insertion sort: short lists */
+			for (k = j; k > 0 && adj[lo + k - 1] > adj[lo + k]; k--) {
+				a = adj[lo + k];
+				adj[lo + k] = adj[lo + k - 1];
+				adj[lo + k - 1] = a;
+			}
+		adjoff[i] = w;
+		for (j = 0; j < n; j++)
+			if (j == 0 || adj[lo + j] != adj[lo + j - 1])
+				adj[w++] = adj[lo + j];
+		deg[i] = w - adjoff[i];
+	}
+	adjoff[nv] = w;
+	free(fill);
+}
+
+/* Breadth first from s over unplaced vertices into q; the last level. */
+static size_t
+bfs(uint32_t s, uint32_t *q, uint32_t *dist, const char *placed,
+    size_t *lastlevel, uint32_t stamp, uint32_t *seen)
+{
+	size_t head = 0, tail = 0, j;
+
+	q[tail++] = s;
+	seen[s] = stamp;
+	dist[s] = 0;
+	*lastlevel = 0;
+	while (head < tail) {
+		uint32_t v = q[head++];
+
+		if (dist[v] != dist[q[*lastlevel]])
+			*lastlevel = head - 1;
+		for (j = adjoff[v]; j < adjoff[v + 1]; j++) {
+			uint32_t w = adj[j];
+
+			if (!placed[w] && seen[w] != stamp) {
+				seen[w] = stamp;
+				dist[w] = dist[v] + 1;
+				q[tail++] = w;
+			}
+		}
+	}
+	return tail;
+}
+
+static void
+rcm(size_t nv)
+{
+	uint32_t *order, *q, *dist, *seen, stamp = 0, s, best, v, w, t;
+	char *placed;
+	size_t n = 0, i, j, k, last, len, head, cnt, ecc;
+
+	buildgraph(nv);
+	order = xreallocarray(NULL, nv + 1, sizeof(*order));
+	q = xreallocarray(NULL, nv + 1, sizeof(*q));
+	dist = xreallocarray(NULL, nv + 1, sizeof(*dist));
+	seen = xreallocarray(NULL, nv + 1, sizeof(*seen));
+	placed = xmalloc(nv + 1);
+	memset(placed, 0, nv + 1);
+	memset(seen, 0, (nv + 1) * sizeof(*seen));
+	for (i = 0; i < nv; i++) {
+		if (placed[i])
+			continue;
+		s = i;
+		len = bfs(s, q, dist, placed, &last, ++stamp, seen);
+		ecc = dist[q[len - 1]];
+		for (;;) {
+			best = q[last];
+			for (k = last; k < len; k++)
+				if (deg[q[k]] < deg[best])
+					best = q[k];
+			len = bfs(best, q, dist, placed, &last, ++stamp, seen);
+			if (dist[q[len - 1]] <= ecc) {
+				s = best;
+				break;
+			}
+			ecc = dist[q[len - 1]];
+			s = best;
+		}
+		/* Cuthill-McKee from s: each vertex's new neighbours by degree */
+		head = n;
+		order[n++] = s;
+		placed[s] = 1;
+		while (head < n) {
+			v = order[head++];
+			cnt = n;
+			for (j = adjoff[v]; j < adjoff[v + 1]; j++) {
+				w = adj[j];
+				if (!placed[w]) {
+					placed[w] = 1;
+					order[n++] = w;
+				}
+			}
+			for (j = cnt + 1; j < n; j++)
+				for (k = j; k > cnt && (deg[order[k - 1]] >
+				    deg[order[k]] || (deg[order[k - 1]] ==
+				    deg[order[k]] && order[k - 1] > order[k]));
+				    k--) {
+					t = order[k];
+					order[k] = order[k - 1];
+					order[k - 1] = t;
+				}
+		}
+	}
+	for (i = 0; i < nv; i++)
+		perm[order[i]] = nv - i;
+	free(order);
+	free(q);
+	free(dist);
+	free(seen);
+	free(placed);
+	free(adj);
+	free(adjoff);
+	free(deg);
+}
+
+/* Vertex i + 1 as it is written, in the order of the new numbers. */
+static uint32_t *
+inverse(size_t nv)
+{
+	uint32_t *inv = xreallocarray(NULL, nv + 1, sizeof(*inv));
+	size_t i;
+
+	for (i = 0; i < nv; i++)
+		inv[perm[i] - 1] = i + 1;
+	return inv;
+}
+
+static double
+gridcoord(int axis, uint64_t i)
+{
+	return cellcoord(axis ? u.y0 : u.x0, u.size, GRID, i);
+}
+
+/* One line of numbers: integers, then reals, into fp. */
+static void
+putline(FILE *fp, const long long *iv, int ni, const double *rv, int nr,
+    const char *tail)
+{
+	char buf[64 * 12], *p = buf;
+	int i;
+
+	for (i = 0; i < ni; i++) {
+		if (p > buf)
+			*p++ = ' ';
+		p = fmtint(p, iv[i]);
+	}
+	for (i = 0; i < nr; i++) {
+		if (p > buf)
+			*p++ = ' ';
+		p = fmtreal(p, rv[i]);
+	}
+	p += strlen(strcpy(p, tail));
+	*p++ = '\n';
+	if (fwrite(buf, 1, p - buf, fp) != (size_t)(p - buf))
+		die(1, "write error");
+}
+
+static void
+vertexxy(uint32_t id, double *xy)
+{
+	uint64_t x, y;
+
+	corners_point(vt, id, &x, &y);
+	xy[0] = gridcoord(0, x);
+	xy[1] = gridcoord(1, y);
+}
+
+static int
+classtag(int class)
+{
+	return class == 'F' ? 1 : class == 'P' ? 2 : 4;
+}
+
+static void
+writeqtree(size_t nv, const uint32_t *inv)
+{
+	char path[GRID + 2];
+	unsigned long long v[4], first = 1;
+	struct cell c;
+	uint64_t x, y;
+	size_t i;
+	int k;
+
+	for (i = 0; i < nleaves; i++) {
+		const struct leaf *l = &leaves[i];
+
+		memset(&c, 0, sizeof(c));
+		c.level = l->level;
+		c.ix = l->ix;
+		c.iy = l->iy;
+		c.class = l->class;
+		c.path = cellpath(path, l->level, l->ix, l->iy);
+		c.size = u.size;
+		qt_cell(&c, first);
+		first += l->nel;
+	}
+	for (i = 0; i < nv; i++) {
+		corners_point(vt, inv[i], &x, &y);
+		qt_gridvertex(i + 1, GRID, x, y);
+	}
+	for (i = 0; i < nelems; i++) {
+		for (k = 0; k < nverts(&elems[i]); k++)
+			v[k] = perm[elems[i].v[k] - 1];
+		qt_elem(i + 1, k == 4 ? "quad" : "tri", k, v);
+	}
+	for (i = 0; i < nhangs; i++)
+		qt_hang(perm[hangs[i].v - 1], perm[hangs[i].a - 1],
+		    perm[hangs[i].b - 1]);
+	qt_end();
+}
+
+static void
+writemsh(size_t nv, const uint32_t *inv)
+{
+	long long iv[9];
+	double xy[3];
+	size_t i, e = 0, j, id = 0;
+	int k, n, tags[5] = { 0 };
+
+	for (i = 0; i < nleaves; i++)
+		tags[classtag(leaves[i].class)] = 1;
+	tags[3] = nsegs > 0;
+	printf("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%d\n",
+	    tags[1] + tags[2] + tags[3] + tags[4]);
+	if (tags[3])
+		printf("1 3 \"boundary\"\n");
+	if (tags[1])
+		printf("2 1 \"full\"\n");
+	if (tags[2])
+		printf("2 2 \"partial\"\n");
+	if (tags[4])
+		printf("2 4 \"empty\"\n");
+	printf("$EndPhysicalNames\n$Nodes\n%zu\n", nv);
+	for (i = 0; i < nv; i++) {
+		iv[0] = i + 1;
+		vertexxy(inv[i], xy);
+		xy[2] = 0;
+		putline(stdout, iv, 1, xy, 3, "");
+	}
+	printf("$EndNodes\n$Elements\n%zu\n", nelems + nsegs);
+	for (i = 0; i < nleaves; i++)
+		for (j = 0; j < leaves[i].nel; j++, e++) {
+			n = nverts(&elems[e]);
+			iv[0] = ++id;
+			iv[1] = n == 4 ? 3 : 2;
+			iv[2] = 2;
+			iv[3] = iv[4] = classtag(leaves[i].class);
+			for (k = 0; k < n; k++)
+				iv[5 + k] = perm[elems[e].v[k] - 1];
+			putline(stdout, iv, 5 + n, NULL, 0, "");
+		}
+	for (i = 0; i < nsegs; i++) {
+		iv[0] = ++id;
+		iv[1] = 1;
+		iv[2] = 2;
+		iv[3] = iv[4] = 3;
+		iv[5] = perm[segs[i].a - 1];
+		iv[6] = perm[segs[i].b - 1];
+		putline(stdout, iv, 7, NULL, 0, "");
+	}
+	printf("$EndElements\n");
+}
+
+static void
+writevtk(size_t nv, const uint32_t *inv)
+{
+	long long iv[5];
+	double xy[3];
+	size_t i, j, e, nref = 0;
+	int k, n, pass;
+
+	printf("# vtk DataFile Version 3.0\nqtmesh\nASCII\n"
+	    "DATASET UNSTRUCTURED_GRID\nPOINTS %zu double\n", nv);
+	for (i = 0; i < nv; i++) {
+		vertexxy(inv[i], xy);
+		xy[2] = 0;
+		putline(stdout, NULL, 0, xy, 3, "");
+	}
+	for (i = 0; i < nelems; i++)
+		nref += 1 + nverts(&elems[i]);
+	printf("CELLS %zu %zu\n", nelems, nref);
+	for (i = 0; i < nelems; i++) {
+		n = nverts(&elems[i]);
+		iv[0] = n;
+		for (k = 0; k < n; k++)
+			iv[1 + k] = perm[elems[i].v[k] - 1] - 1;
+		putline(stdout, iv, 1 + n, NULL, 0, "");
+	}
+	printf("CELL_TYPES %zu\n", nelems);
+	for (i = 0; i < nelems; i++)
+		printf("%d\n", nverts(&elems[i]) == 4 ? 9 : 5);
+	printf("CELL_DATA %zu\n", nelems);
+	for (pass = 0; pass < 2; pass++) {
+		printf("SCALARS %s int 1\nLOOKUP_TABLE default\n",
+		    pass ? "level" : "class");
+		for (i = e = 0; i < nleaves; i++)
+			for (j = 0; j < leaves[i].nel; j++, e++)
+				printf("%d\n", pass ? leaves[i].level :
+				    classtag(leaves[i].class));
+	}
+}
+
+static FILE *
+create(const char *ext, char **name)
+{
+	FILE *fp;
+
+	*name = xmalloc(strlen(outbase) + strlen(ext) + 1);
+	strcat(strcpy(*name, outbase), ext);
+	if ((fp = fopen(*name, "w")) == NULL)
+		die(1, "%s: cannot create", *name);
+	return fp;
+}
+
+static void
+finish(FILE *fp, char *name)
+{
+	if (fflush(fp) == EOF || ferror(fp) || fclose(fp) == EOF)
+		die(1, "%s: write error", name);
+	free(name);
+}
+
+/* Shewchuk's Triangle: BASE.node with boundary markers, BASE.ele. */
+static void
+writetriangle(size_t nv, const uint32_t *inv)
+{
+	long long iv[5];
+	double xy[2];
+	char *name, *onb;
+	FILE *fp;
+	size_t i, j, e;
+	int k;
+
+	onb = xmalloc(nv + 1);
+	memset(onb, 0, nv + 1);
+	for (i = 0; i < nsegs; i++)
+		onb[perm[segs[i].a - 1]] = onb[perm[segs[i].b - 1]] = 1;
+	fp = create(".node", &name);
+	fprintf(fp, "%zu 2 0 1\n", nv);
+	for (i = 0; i < nv; i++) {
+		vertexxy(inv[i], xy);
+		iv[0] = i + 1;
+		putline(fp, iv, 1, xy, 2, onb[i + 1] ? " 1" : " 0");
+	}
+	finish(fp, name);
+	fp = create(".ele", &name);
+	fprintf(fp, "%zu 3 1\n", nelems);
+	for (i = e = 0; i < nleaves; i++)
+		for (j = 0; j < leaves[i].nel; j++, e++) {
+			iv[0] = e + 1;
+			for (k = 0; k < 3; k++)
+				iv[1 + k] = perm[elems[e].v[k] - 1];
+			iv[4] = classtag(leaves[i].class);
+			putline(fp, iv, 5, NULL, 0, "");
+		}
+	finish(fp, name);
+	free(onb);
+}
+
+static int
+formatname(const char *s)
+{
+	static const char *const names[] = { "qtree", "msh", "vtk",
+	    "triangle" };
+	int i;
+
+	for (i = 0; i < 4; i++)
+		if (strcmp(s, names[i]) == 0)
+			return i;
+	die(2, "-f: unknown format %s (qtree, msh, vtk or triangle)", s);
+	return -1;
+}
+
+int
+main(int argc, char *argv[])
+{
+	struct qtreader *r;
+	FILE *fp;
+	struct qtrec rec;
+	enum qtkind kind;
+	uint32_t *inv, bw0 = 0;
+	size_t i, nv;
+	int ch, head;
+
+	setprogname_(argv[0]);
+	setclasses("FP");
+	while ((ch = getopt(argc, argv, "HTc:f:o:rv")) != -1)
+		switch (ch) {
+		case 'H':
+			conform = 0;
+			break;
+		case 'T':
+			alltri = 1;
+			break;
+		case 'c':
+			setclasses(optarg);
+			break;
+		case 'f':
+			format = formatname(optarg);
+			break;
+		case 'o':
+			outbase = optarg;
+			break;
+		case 'r':
+			renumber = 1;
+			break;
+		case 'v':
+			verbose = 1;
+			break;
+		default:
+			usage();
+		}
+	argc -= optind;
+	argv += optind;
+	if (argc > 1)
+		usage();
+	if ((format == TRIANGLE) != (outbase != NULL))
+		die(2, format == TRIANGLE ? "-f triangle needs -o basename" :
+		    "-o is for -f triangle only");
+	if (format == TRIANGLE)
+		alltri = 1;
+	inittemplates();
+
+	fp = openin(argc == 1 ? argv[0] : "-", &inname);
+	r = qt_open(fp, inname, QT_NEEDUNIVERSE | (verbose ? QT_VERBOSE : 0));
+	head = format == QTREE;
+	if (head)
+		qt_header();
+	while ((kind = qt_read(r, &rec)) != QT_EOF) {
+		switch (kind) {
+		case QT_UNIVERSE:
+			u = rec.u;
+			if (head)
+				qt_universe(&rec.u);
+			break;
+		case QT_LEVEL:
+			if (head)
+				qt_level(rec.level);
+			break;
+		case QT_RING:
+			if (head)
+				qt_ring(&rec.ring);
+			break;
+		case QT_NODE:
+			break;
+		case QT_LEAF:
+			if (keep[(unsigned char)rec.c.class])
+				addleaf(&rec);
+			break;
+		case QT_VERTEX:
+		case QT_ELEM:
+			qt_fail(r, "the input already holds a mesh (%s record): "
+			    "qtmesh reads a tree",
+			    kind == QT_ELEM ? "elem" : "vertex");
+			break;
+		default:
+			if (head)
+				qt_echo(&rec);
+			break;
+		}
+	}
+	qt_close(r);
+
+	/* the leaves and about a third as many nodes, the set sized once */
+	set = cellset_new();
+	cellset_reserve(set, nleaves + nleaves / 2);
+	for (i = 0; i < nleaves; i++)
+		setleaf(&leaves[i]);
+	for (i = 0; i < nleaves; i++)
+		sides(i);
+	cellset_free(set);
+	vt = corners_new();
+	for (i = 0; i < nleaves; i++)
+		meshleaf(&leaves[i]);
+	resolve();
+	nv = corners_count(vt);
+	perm = xreallocarray(NULL, nv + 1, sizeof(*perm));
+	for (i = 0; i < nv; i++)
+		perm[i] = i + 1;
+	if (verbose)
+		bw0 = bandwidth();
+	if (renumber && nv > 0)
+		rcm(nv);
+	if (verbose) {
+		fprintf(stderr, "%s: %zu leaves, %zu vertices, %zu elements",
+		    progname, nleaves, nv, nelems);
+		if (!conform)
+			fprintf(stderr, ", %zu hanging vertices", nhangs);
+		fprintf(stderr, "\n");
+		if (renumber)
+			fprintf(stderr, "%s: bandwidth %lu, %lu before "
+			    "renumbering\n", progname,
+			    (unsigned long)bandwidth(), (unsigned long)bw0);
+		else
+			fprintf(stderr, "%s: bandwidth %lu\n", progname,
+			    (unsigned long)bw0);
+	}
+	inv = inverse(nv);
+	switch (format) {
+	case QTREE:
+		writeqtree(nv, inv);
+		break;
+	case MSH:
+		writemsh(nv, inv);
+		break;
+	case VTK:
+		writevtk(nv, inv);
+		break;
+	case TRIANGLE:
+		writetriangle(nv, inv);
+		break;
+	}
+	closeout();
+	free(inv);
+	return 0;
+}
