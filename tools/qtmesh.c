@@ -93,7 +93,7 @@ struct seg {			/* a side on the boundary, a to b */
 	uint32_t	h;
 };
 
-static char keep[256];
+static unsigned keep = CLASSBIT('F') | CLASSBIT('P');
 static int conform = 1, alltri, renumber, verbose, format = QTREE;
 static const char *outbase, *inname;
 static struct universe u;
@@ -133,19 +133,6 @@ grow(void *p, size_t *cap, size_t n, size_t size)
 		return p;
 	*cap = *cap ? 2 * *cap : 1024;
 	return xreallocarray(p, *cap, size);
-}
-
-static void
-setclasses(const char *s)
-{
-	if (*s == '\0')
-		die(2, "-c: no classes given (a string of F, E and P)");
-	memset(keep, 0, sizeof(keep));
-	for (; *s != '\0'; s++) {
-		if (*s != 'F' && *s != 'E' && *s != 'P')
-			die(2, "-c: unknown class %c (F, E or P)", *s);
-		keep[(unsigned char)*s] = 1;
-	}
 }
 
 static int
@@ -947,7 +934,6 @@ main(int argc, char *argv[])
 	int ch, head;
 
 	setprogname_(argv[0]);
-	setclasses("FP");
 	while ((ch = getopt(argc, argv, "HTc:f:o:rv")) != -1)
 		switch (ch) {
 		case 'H':
@@ -957,7 +943,7 @@ main(int argc, char *argv[])
 			alltri = 1;
 			break;
 		case 'c':
-			setclasses(optarg);
+			keep = optclasses(optarg);
 			break;
 		case 'f':
 			format = formatname(optarg);
@@ -1008,7 +994,7 @@ main(int argc, char *argv[])
 		case QT_NODE:
 			break;
 		case QT_LEAF:
-			if (keep[(unsigned char)rec.c.class])
+			if (keep & CLASSBIT(rec.c.class))
 				addleaf(&rec);
 			break;
 		case QT_VERTEX:
