@@ -10,13 +10,10 @@
  * X0 + (IX << k) * (SIZE / 2^(L+k)) and X0 + IX * (SIZE / 2^L) round the
  * same exact product.
  *
- * Leaves in preorder are in Z order of their lower left corners, and a
- * corner (X, Y) belongs only to cells that hold one of the four grid
- * squares around it, the last of them in Z order being the one whose lower
- * left is (X, Y).  So once a leaf starts beyond (X, Y) in Z order, that
- * corner is never met again and leaves the table of live corners, which
- * stays small; what remains per element is its four vertex numbers and per
- * vertex its grid point, because all vertex records precede the elements.
+ * lib/corner.c numbers them in order of first use, keeping only the
+ * corners that later leaves can still reach; what remains per element is
+ * its four vertex numbers and per vertex its grid point, because all
+ * vertex records precede the elements.
  */
 #include <math.h>
 #include <stdint.h>
@@ -37,129 +34,12 @@ usage(void)
 	exit(2);
 }
 
-/* Is grid point (ax, ay) before (bx, by) in Z order? */
-static int
-zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
-{
-	struct cell a, b;
-
-	a.level = b.level = GRID;
-	a.ix = ax;
-	a.iy = ay;
-	b.ix = bx;
-	b.iy = by;
-	return cellcmp(&a, &b) < 0;
-}
-
-/*
- * The live corners: open addressing, linear probing, at most half full.
- * Id 0 marks a free slot.
- */
-struct vslot {
-	uint64_t	x, y;
-	uint32_t	id;
-};
-
-static struct livetable {
-	struct vslot	*slot;
-	size_t		 cap, n;	/* slots, a power of two; in use */
-	uint64_t	 curx, cury;	/* lower left of the leaf at hand */
-} live;
-
 /* The mesh to write once the stream is read. */
 static struct mesh {
-	uint64_t	(*vert)[2];	/* grid point of each vertex */
-	size_t		 nvert, vertcap;
+	struct corners	*corners;	/* the vertices */
 	uint32_t	(*elem)[4];	/* vertex numbers of each element */
 	size_t		 nelem, elemcap;
 } mesh;
-
-static size_t
-vhash(uint64_t x, uint64_t y)
-{
-	uint64_t h = x * UINT64_C(0x9E3779B97F4A7C15) ^
-	    y * UINT64_C(0xC2B2AE3D27D4EB4F);
-
-	return (h ^ h >> 31) & (live.cap - 1);
-}
-
-static size_t
-nextslot(size_t k)
-{
-	return (k + 1) & (live.cap - 1);
-}
-
-/* Corners before the leaf at hand in Z order are never met again. */
-static int
-passed(const struct vslot *v)
-{
-	return zbefore(v->x, v->y, live.curx, live.cury);
-}
-
-static void
-liveinsert(const struct vslot *v)
-{
-	size_t k;
-
-	for (k = vhash(v->x, v->y); live.slot[k].id != 0; k = nextslot(k))
-		;
-	live.slot[k] = *v;
-	live.n++;
-}
-
-/*
- * Drops the corners that no leaf from the current one on can have, and
- * doubles the table when that frees too little.
- */
-static void
-liveprune(void)
-{
-	struct vslot *old = live.slot;
-	size_t oldcap = live.cap, i, keepn = 0;
-
-	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0 && !passed(&old[i]))
-			keepn++;
-	live.cap = oldcap ? oldcap : 1024;
-	while (4 * (keepn + 1) > live.cap)
-		live.cap *= 2;
-	live.slot = xreallocarray(NULL, live.cap, sizeof(*live.slot));
-	memset(live.slot, 0, live.cap * sizeof(*live.slot));
-	live.n = 0;
-	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0 && !passed(&old[i]))
-			liveinsert(&old[i]);
-	free(old);
-}
-
-/* The number of the corner at grid point (x, y); a new one is numbered. */
-static uint32_t
-vertex(uint64_t x, uint64_t y)
-{
-	struct vslot v;
-	size_t k;
-
-	/* pruning keeps the current leaf's corners: none lies before it */
-	if (2 * (live.n + 1) > live.cap)
-		liveprune();
-	for (k = vhash(x, y); live.slot[k].id != 0; k = nextslot(k))
-		if (live.slot[k].x == x && live.slot[k].y == y)
-			return live.slot[k].id;
-	if (mesh.nvert == UINT32_MAX)
-		die(1, "more than %lu vertices", (unsigned long)UINT32_MAX);
-	if (mesh.nvert == mesh.vertcap) {
-		mesh.vertcap = mesh.vertcap ? 2 * mesh.vertcap : 1024;
-		mesh.vert = xreallocarray(mesh.vert, mesh.vertcap,
-		    sizeof(*mesh.vert));
-	}
-	mesh.vert[mesh.nvert][0] = x;
-	mesh.vert[mesh.nvert][1] = y;
-	v.x = x;
-	v.y = y;
-	v.id = ++mesh.nvert;
-	liveinsert(&v);
-	return v.id;
-}
 
 /*
  * Every leaf passes here with -n, kept or not, to move the Z order
@@ -172,8 +52,7 @@ meshleaf(const struct cell *c, int kept)
 	uint64_t x = c->ix << shift, y = c->iy << shift;
 	uint64_t s = (uint64_t)1 << shift;
 
-	live.curx = x;
-	live.cury = y;
+	corners_at(mesh.corners, x, y);
 	if (!kept)
 		return;
 	if (mesh.nelem == mesh.elemcap) {
@@ -182,10 +61,10 @@ meshleaf(const struct cell *c, int kept)
 		    sizeof(*mesh.elem));
 	}
 	/* counter-clockwise from the lower left */
-	mesh.elem[mesh.nelem][0] = vertex(x, y);
-	mesh.elem[mesh.nelem][1] = vertex(x + s, y);
-	mesh.elem[mesh.nelem][2] = vertex(x + s, y + s);
-	mesh.elem[mesh.nelem][3] = vertex(x, y + s);
+	mesh.elem[mesh.nelem][0] = corners_id(mesh.corners, x, y);
+	mesh.elem[mesh.nelem][1] = corners_id(mesh.corners, x + s, y);
+	mesh.elem[mesh.nelem][2] = corners_id(mesh.corners, x + s, y + s);
+	mesh.elem[mesh.nelem][3] = corners_id(mesh.corners, x, y + s);
 	mesh.nelem++;
 }
 
@@ -193,11 +72,14 @@ static void
 writemesh(void)
 {
 	unsigned long long v[4];
+	uint64_t x, y;
 	size_t i;
 	int k;
 
-	for (i = 0; i < mesh.nvert; i++)
-		qt_gridvertex(i + 1, GRID, mesh.vert[i][0], mesh.vert[i][1]);
+	for (i = 1; i <= corners_count(mesh.corners); i++) {
+		corners_point(mesh.corners, i, &x, &y);
+		qt_gridvertex(i, GRID, x, y);
+	}
 	for (i = 0; i < mesh.nelem; i++) {
 		for (k = 0; k < 4; k++)
 			v[k] = mesh.elem[i][k];
@@ -290,6 +172,8 @@ main(int argc, char *argv[])
 		usage();
 	if (nflag && format != QTREE)
 		die(2, "-n: a mesh is written in the qtree format only");
+	if (nflag)
+		mesh.corners = corners_new();
 
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    verbose ? QT_VERBOSE : 0);
