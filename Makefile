@@ -14,7 +14,7 @@ MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
 	man/qt2svg.1 man/qtcat.1
 MAN5 = man/qtree.5
 LIBOBJ = lib/msg.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
-	lib/write.o lib/area.o lib/cellset.o
+	lib/write.o lib/area.o lib/cellset.o lib/split.o
 
 all: $(BIN)
 
