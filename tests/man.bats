@@ -32,3 +32,12 @@ load test_helper
 	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 -r 03 | grep -E "^(node|leaf)" | head -1'
 	[ "$output" = "node 03 2 1 1 7.05 7.05 3.05" ]
 }
+
+@test "qtsplit(1): the -L example prints what the page says" {
+	# the counts are those of the trees that tests/qtsplit.bats checks
+	# against each ring split alone
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 -L holes=10 |
+	    awk '\''$1 == "leaf" && $9 == "P" { n[$3]++ } END { print n[6], n[10] }'\'
+	[ "$output" = "262 1340" ]
+	grep -q '^262 1340$' "$TOP/man/qtsplit.1"
+}

@@ -49,6 +49,7 @@ cases() {
 		echo "$b.qtsplit-r|polyread $f | qtsplit -l 8 -r 30"
 		echo "$b.qtsplit-r0|polyread $f | qtsplit -l 7 -r 0123"
 		echo "$b.qtsplit-v|polyread $f | qtsplit -v -l 6 2>&1 >/dev/null"
+		echo "$b.qtsplit-L|polyread $f | qtsplit -l 4 -L 1=6 -L holes=2"
 		echo "$b.qtleaves|polyread $f | qtsplit -l 6 | qtleaves"
 		echo "$b.qtleaves-cE|polyread $f | qtsplit -l 6 | qtleaves -c E"
 		echo "$b.qtleaves-n|polyread $f | qtsplit -l 5 | qtleaves -n -c FEP"

@@ -13,10 +13,21 @@
 
 #include "qtree.h"
 
-/* What the options ask for; maxlevel is -1 until the stream is read. */
+/* One -L: ring id's level, or every hole's for id 0. */
+struct ringlevel {
+	long	id;
+	int	level;
+};
+
+/*
+ * What the options ask for; maxlevel is -1 until the stream is read, and
+ * deepest is the level record's: the deepest level a cell may be split to.
+ */
 static struct options {
-	int	minlevel, maxlevel;
+	int	minlevel, maxlevel, deepest;
 	int	verbose;
+	struct ringlevel *rl;	/* -L, in the order given */
+	size_t	 nrl;
 } opt = { .maxlevel = -1 };
 
 /*
@@ -28,6 +39,7 @@ static struct input {
 	int		 level;		/* of its level record; -1 for none */
 	struct splitter	*sp;
 	struct qtrec	**rings, **others;
+	unsigned char	*hole;		/* per ring: a hole */
 	size_t		 nrings, nothers;
 } in = { .level = -1 };
 
@@ -41,8 +53,8 @@ static struct walk {
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: qtsplit [-v] [-l level] [-m level] [-r path] "
-	    "[file]\n");
+	fprintf(stderr, "usage: qtsplit [-v] [-L ring=level] [-l level] "
+	    "[-m level] [-r path] [file]\n");
 	exit(2);
 }
 
@@ -80,10 +92,18 @@ emit(int level, uint64_t ix, uint64_t iy, char class)
 		report(0);
 }
 
-static int
+/*
+ * A cell of n edges is split above the minimum level, and when partial
+ * while some ring that meets it allows the next level.
+ */
+static inline int
 splits(int level, size_t n)
 {
-	return level < opt.minlevel || (n > 0 && level < opt.maxlevel);
+	if (level < opt.minlevel)
+		return 1;
+	if (n == 0 || level >= opt.deepest)
+		return 0;
+	return opt.nrl == 0 || split_allows(in.sp, level, n);
 }
 
 /* Writes the cell and its subtree; its n edges are the splitter's at level. */
@@ -133,6 +153,8 @@ readrings(struct qtreader *r)
 			break;
 		case QT_RING:
 			split_addring(in.sp, &rec.ring);
+			in.hole = xreallocarray(in.hole, in.nrings + 1, 1);
+			in.hole[in.nrings] = rec.ring.hole;
 			keep(&in.rings, &in.nrings, &rec);
 			break;
 		case QT_NODE:
@@ -147,6 +169,61 @@ readrings(struct qtreader *r)
 	}
 }
 
+/* -L RING=LEVEL: RING a ring's id or "holes". */
+static void
+addringlevel(const char *arg)
+{
+	const char *eq = strchr(arg, '='), *end;
+	long long id = 0, level;
+	struct ringlevel *rl;
+
+	if (eq == NULL)
+		die(2, "-L: not RING=LEVEL: %s", arg);
+	if (!(eq - arg == 5 && strncmp(arg, "holes", 5) == 0) &&
+	    (parselong(arg, &end, &id) < 0 || end != eq || id < 1))
+		die(2, "-L: a ring is a positive ring id or holes: %s", arg);
+	if (parselong(eq + 1, &end, &level) < 0 || *end != '\0' ||
+	    level < 0 || level > QT_MAXLEVEL)
+		die(2, "-L: level must be an integer from 0 to %d: %s",
+		    QT_MAXLEVEL, arg);
+	opt.rl = xreallocarray(opt.rl, opt.nrl + 1, sizeof(*opt.rl));
+	rl = &opt.rl[opt.nrl++];
+	rl->id = id;
+	rl->level = level;
+}
+
+/*
+ * Gives each ring its level, -l's or the last -L's that names it, and
+ * sets the deepest level a cell may be split to.
+ */
+static void
+ringlevels(void)
+{
+	size_t i, j;
+
+	opt.deepest = opt.maxlevel;
+	for (j = 0; j < opt.nrl; j++)
+		if (opt.rl[j].id > (long)in.nrings)
+			die(2, "-L: no ring %ld: the stream has %zu",
+			    opt.rl[j].id, in.nrings);
+	if (opt.nrl > 0 && in.nrings > 0) {
+		opt.deepest = 0;
+		for (i = 0; i < in.nrings; i++) {
+			int level = opt.maxlevel;
+
+			for (j = 0; j < opt.nrl; j++)
+				if (opt.rl[j].id == (long)i + 1 ||
+				    (opt.rl[j].id == 0 && in.hole[i]))
+					level = opt.rl[j].level;
+			split_ringlevel(in.sp, i, level);
+			if (level > opt.deepest)
+				opt.deepest = level;
+		}
+	}
+	if (opt.minlevel > opt.deepest)
+		opt.deepest = opt.minlevel;
+}
+
 static void
 writehead(void)
 {
@@ -154,7 +231,7 @@ writehead(void)
 
 	qt_header();
 	qt_universe(&in.u);
-	qt_level(opt.maxlevel);
+	qt_level(opt.deepest);
 	for (i = 0; i < in.nrings; i++) {
 		qt_echo(in.rings[i]);
 		qt_free(in.rings[i]);
@@ -209,8 +286,11 @@ main(int argc, char *argv[])
 	int ch, inside, level;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "l:m:r:v")) != -1)
+	while ((ch = getopt(argc, argv, "L:l:m:r:v")) != -1)
 		switch (ch) {
+		case 'L':
+			addringlevel(optarg);
+			break;
 		case 'l':
 		case 'm':
 			if (parselong(optarg, &end, &val) < 0 || *end != '\0' ||
@@ -245,6 +325,7 @@ main(int argc, char *argv[])
 	if (opt.minlevel > opt.maxlevel)
 		die(2, "-m %d is deeper than the maximum level %d",
 		    opt.minlevel, opt.maxlevel);
+	ringlevels();
 	writehead();
 	n = split_root(in.sp, &inside);
 	level = descend(subtree, &ix, &iy, &n, &inside);
