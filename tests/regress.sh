@@ -23,7 +23,7 @@ saved=tests/regress
 save=0
 [ "${1:-}" = -s ] && save=1
 
-for p in polyread qtsplit qtleaves qtstats qt2svg qtcat; do
+for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtbalance; do
 	[ -x "./$p" ] || { echo "regress: build first (make)" >&2; exit 2; }
 done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/regress.XXXXXX") || exit 2
@@ -65,6 +65,9 @@ cases() {
 		echo "$b.qtcat|polyread $f | qtsplit -l 6 | qtcat"
 		echo "$b.qtcat-u|polyread $f | qtsplit -l 6 | grep -v ' E\$' | qtcat -u"
 		echo "$b.qtcat-shards|$shards $f"
+		echo "$b.qtbalance|polyread $f | qtsplit -l 6 | qtbalance"
+		echo "$b.qtbalance-c|polyread $f | qtsplit -l 6 | qtbalance -c"
+		echo "$b.qtbalance-L|polyread $f | qtsplit -l 7 -L holes=3 -L 1=5 | qtbalance -c"
 	done
 	# The readers' long way: numbers spelled otherwise than the writers do.
 	echo "odd.qtleaves|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtleaves -n -c FEP"
@@ -79,6 +82,7 @@ cases() {
 	echo "amoeba16.qtstats|polyread samples/amoeba.brep | qtsplit -l 16 | qtstats -l"
 	echo "amoeba13.qtstats-mesh|polyread samples/amoeba.brep | qtsplit -l 13 | qtleaves -n | qtstats"
 	echo "amoeba13.qt2svg|polyread samples/amoeba.brep | qtsplit -l 13 | qt2svg | cksum"
+	echo "amoeba16.qtbalance|polyread samples/amoeba.brep | qtsplit -l 16 | qtbalance | cksum"
 	echo "amoeba30.qtsplit-r|polyread samples/amoeba.brep | qtsplit -l 30 -r 1203012 | cksum"
 	# Every bad input through every program that reads its kind.
 	for f in tests/bad/*; do
