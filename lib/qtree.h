@@ -184,6 +184,39 @@ void	 qt_fail(const struct qtreader *, const char *, ...);
 void	 qt_close(struct qtreader *);
 
 /*
+ * split.c: the exact classifier of qtsplit(1), for any program that
+ * classifies cells from rings.  A splitter holds the rings' edges and, per
+ * level, the list of the edges that meet the open interior of one cell,
+ * the lists of one path from the root down.  split_root fills level 0's
+ * list and gives the root's edge count and parity (1: a point just inside
+ * its lower left corner lies in the region); split_children(sp, level, ix,
+ * iy, n, inside, parity) sorts the n edges of cell (level, ix, iy), which
+ * must be level's list, into its children and gives their parities;
+ * split_child(sp, level, n, q) then moves child q's edges to the next
+ * level's list and returns their count, overwriting that list.  A cell of
+ * n edges and parity inside has class split_class(n, inside): 'P' when n >
+ * 0, else 'F' or 'E'.  Rings count from 0 as added; split_ringlevel gives
+ * one a level of its own (the default is QT_MAXLEVEL), and split_allows
+ * says whether some ring with an edge in level's first n allows level + 1.
+ */
+struct splitter *split_new(const struct universe *);
+void	 split_free(struct splitter *);
+void	 split_addring(struct splitter *, const struct ring *);
+size_t	 split_nrings(const struct splitter *);
+void	 split_ringlevel(struct splitter *, size_t, int);
+size_t	 split_root(struct splitter *, int *);
+void	 split_children(struct splitter *, int, uint64_t, uint64_t, size_t,
+	    int, int[4]);
+size_t	 split_child(struct splitter *, int, size_t, int);
+int	 split_allows(const struct splitter *, int, size_t);
+
+static inline char
+split_class(size_t n, int inside)
+{
+	return n > 0 ? 'P' : inside ? 'F' : 'E';
+}
+
+/*
  * write.c: the qtree(5) writer, buffered on stdout; qt_end writes the end
  * record, which counts every record written, and flushes.
  */

@@ -32,3 +32,23 @@ load test_helper
 	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 -r 03 | grep -E "^(node|leaf)" | head -1'
 	[ "$output" = "node 03 2 1 1 7.05 7.05 3.05" ]
 }
+
+@test "qtsplit(1): the -L example prints what the page says" {
+	# the counts are those of the trees that tests/qtsplit.bats checks
+	# against each ring split alone
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 -L holes=10 |
+	    awk '\''$1 == "leaf" && $9 == "P" { n[$3]++ } END { print n[6], n[10] }'\'
+	[ "$output" = "262 1340" ]
+	grep -q '^262 1340$' "$TOP/man/qtsplit.1"
+}
+
+@test "qtbalance(1): the examples print what the page says" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 > a.qt
+	[ "$(grep -c '^leaf' a.qt)" = 4060 ]
+	[ "$(qtbalance a.qt | grep -c '^leaf')" = 5569 ]
+	sed -n '/^\$ grep -c/,/^\.Ed/p' "$TOP/man/qtbalance.1" | grep -q '^4060$'
+	sed -n '/^\$ qtbalance a.qt | grep/,/^\.Ed/p' "$TOP/man/qtbalance.1" | grep -q '^5569$'
+	[ "$(qtbalance a.qt | qtstats | grep jump)" = "max_level_jump 1" ]
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 -L holes=10 | qtbalance -c | tail -n 1'
+	[[ "$output" == "end "* ]]
+}

@@ -223,7 +223,7 @@ uniform() {
 	run -2 --separate-stderr qtsplit -l 8 -r 03 -s 1 a.qt
 	[ "$stderr" = "qtsplit: -s 1 is above the cell 03" ]
 	run -2 --separate-stderr qtsplit -s 1 -t 1 a.qt
-	[ "$stderr" = "usage: qtsplit [-v] [-l level] [-m level] [-r path] [-s level | -t level] [file]" ]
+	[ "$stderr" = "usage: qtsplit [-v] [-L ring=level] [-l level] [-m level] [-r path] [-s level | -t level] [file]" ]
 	run -2 --separate-stderr qtsplit -s 51 a.qt
 	[ "$stderr" = "qtsplit: -s: level must be an integer from 0 to 50: 51" ]
 }
@@ -255,6 +255,89 @@ uniform() {
 	diff -u want got
 	run -2 --separate-stderr qtsplit -l 51 deep.qt
 	[ "$stderr" = "qtsplit: -l: level must be an integer from 0 to 50: 51" ]
+}
+
+# The paths of the nodes that the rings of stream $1, each alone split to
+# its level ($2 for ring 1, $3 for ring 2, ...), would make, one list: a
+# ring alone is a stream of the universe and that ring as ring 1.
+ringnodes() {
+	qt=$1
+	shift
+	i=1
+	for l in "$@"; do
+		awk -v id=$i '
+		$1 == "universe" { print "qtree 1"; print; n = 1 }
+		$1 == "ring" { keep = $2 == id }
+		keep && $1 == "ring" { print "ring 1 outer " $4; n++; next }
+		keep && $1 == "v" { print; n++ }
+		END { print "end " n }' "$qt" | qtsplit -l "$l"
+		i=$((i + 1))
+	done | awk '$1 == "node" { print $2 }' | LC_ALL=C sort -u
+}
+
+# -L's tree's nodes against ringnodes: $1 the stream, $2 the -L options,
+# then the levels that they give the rings in order.
+checkL() {
+	qt=$1 opts=$2
+	shift 2
+	qtsplit $opts "$qt" > t.qt
+	awk '$1 == "node" { print $2 }' t.qt | LC_ALL=C sort > got
+	ringnodes "$qt" "$@" > want
+	[ -s want ]
+	diff -u want got
+	deepest=$(printf '%s\n' "$@" | sort -n | tail -n 1)
+	[ "$(sed -n 3p t.qt)" = "level $deepest" ]
+	run -0 awk -f "$TOP/tests/treecheck.awk" t.qt
+	[ "$output" = "cells $(grep -cE '^(node|leaf)' t.qt)" ]
+}
+
+@test "-L: the nodes are those that some ring alone, split to its level, makes (amoeba)" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	checkL a.qt "-l 6 -L 2=9" 6 9
+	checkL a.qt "-l 8 -L holes=3" 8 3
+	checkL a.qt "-L 1=2 -l 7 -L 2=5" 2 5
+	checkL a.qt "-l 4 -L 2=7 -L holes=5 -L 1=6" 6 5
+}
+
+@test "-L: the nodes are those that some ring alone, split to its level, makes (lakes)" {
+	polyread "$FIXTURES/lakes.xy" > l.qt
+	checkL l.qt "-l 5 -L holes=8 -L 3=2" 5 8 2 8
+	checkL l.qt "-l 7 -L 1=3" 3 7 7 7
+}
+
+@test "-L: the nodes are those that some ring alone, split to its level, makes (shared lakes)" {
+	need_shared
+	polyread "$SHARED/lakes/lake_huron_ne50m.xy" > h.qt
+	checkL h.qt "-l 8 -L holes=11" 8 11 11 11 11 11 11 11 11 11
+	polyread "$SHARED/lakes/manicouagan_ne10m.xy" > m.qt
+	checkL m.qt "-l 10 -L holes=5 -L 3=12" 10 5 12
+}
+
+@test "-L: a partial leaf lies at or below the level of every ring that meets it" {
+	# the hole of the amoeba stops at level 3, the outline at 8: the
+	# partial leaves above level 8 are the hole's, at level 3 or below
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 -L holes=3 > a.qt
+	awk '$1 == "leaf" && $9 == "P" && $3 < 8 { n[$3]++ }
+	    END { for (l in n) print l, n[l] }' a.qt | sort -n > got
+	[ -s got ]
+	awk '$1 < 3' got > low
+	[ ! -s low ]
+	run -0 awk -f "$TOP/tests/cellcheck.awk" a.qt
+	[ "$output" = "checked $(grep -cE '^leaf .* [FE]$' a.qt)" ]
+}
+
+@test "-L: a ring that is not in the stream, a bad ring or a bad level is refused" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	run -2 --separate-stderr qtsplit -L 3=5 a.qt
+	[ "$stderr" = "qtsplit: -L: no ring 3: the stream has 2" ]
+	run -2 --separate-stderr qtsplit -L hole=5 a.qt
+	[ "$stderr" = "qtsplit: -L: a ring is a positive ring id or holes: hole=5" ]
+	run -2 --separate-stderr qtsplit -L 0=5 a.qt
+	[ "$stderr" = "qtsplit: -L: a ring is a positive ring id or holes: 0=5" ]
+	run -2 --separate-stderr qtsplit -L 1=51 a.qt
+	[ "$stderr" = "qtsplit: -L: level must be an integer from 0 to 50: 1=51" ]
+	run -2 --separate-stderr qtsplit -L 1 a.qt
+	[ "$stderr" = "qtsplit: -L: not RING=LEVEL: 1" ]
 }
 
 @test "the stream's level record is the default, else the report's 6" {

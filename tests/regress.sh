@@ -23,7 +23,7 @@ saved=tests/regress
 save=0
 [ "${1:-}" = -s ] && save=1
 
-for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh; do
+for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance; do
 	[ -x "./$p" ] || { echo "regress: build first (make)" >&2; exit 2; }
 done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/regress.XXXXXX") || exit 2
@@ -52,6 +52,7 @@ cases() {
 		echo "$b.qtsplit-r|polyread $f | qtsplit -l 8 -r 30"
 		echo "$b.qtsplit-r0|polyread $f | qtsplit -l 7 -r 0123"
 		echo "$b.qtsplit-v|polyread $f | qtsplit -v -l 6 2>&1 >/dev/null"
+		echo "$b.qtsplit-L|polyread $f | qtsplit -l 4 -L 1=6 -L holes=2"
 		echo "$b.qtleaves|polyread $f | qtsplit -l 6 | qtleaves"
 		echo "$b.qtleaves-cE|polyread $f | qtsplit -l 6 | qtleaves -c E"
 		echo "$b.qtleaves-n|polyread $f | qtsplit -l 5 | qtleaves -n -c FEP"
@@ -79,6 +80,9 @@ cases() {
 		echo "$b.qtsplit-s|polyread $f | qtsplit -l 6 -s 2"
 		echo "$b.qtsplit-t|polyread $f | qtsplit -l 6 -t 2"
 		echo "$b.qtcat-concat|polyread $f > \$W/p && qtsplit -l 6 -t 2 \$W/p > \$W/t && for r in \$(qtsplit -l 6 -s 2 \$W/p); do qtsplit -l 6 -r \$r \$W/p; done | qtcat \$W/t -"
+		echo "$b.qtbalance|polyread $f | qtsplit -l 6 | qtbalance"
+		echo "$b.qtbalance-c|polyread $f | qtsplit -l 6 | qtbalance -c"
+		echo "$b.qtbalance-L|polyread $f | qtsplit -l 7 -L holes=3 -L 1=5 | qtbalance -c"
 	done
 	# The readers' long way: numbers spelled otherwise than the writers do.
 	echo "odd.qtleaves|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtleaves -n -c FEP"
@@ -95,6 +99,7 @@ cases() {
 	echo "amoeba13.qtmesh|polyread samples/amoeba.brep | qtsplit -m 12 -l 13 | qtmesh | cksum"
 	echo "amoeba13.qtmesh-r|polyread samples/amoeba.brep | qtsplit -m 12 -l 13 | qtmesh -r -f msh | cksum"
 	echo "amoeba13.qt2svg|polyread samples/amoeba.brep | qtsplit -l 13 | qt2svg | cksum"
+	echo "amoeba16.qtbalance|polyread samples/amoeba.brep | qtsplit -l 16 | qtbalance | cksum"
 	echo "amoeba30.qtsplit-r|polyread samples/amoeba.brep | qtsplit -l 30 -r 1203012 | cksum"
 	# Every bad input through every program that reads its kind.
 	for f in tests/bad/*; do

@@ -80,7 +80,8 @@ bad_case() {
 	polyread "$SAMPLES/amoeba.brep" > a.qt
 	qtsplit -l 8 a.qt > t.qt
 	for cmd in "polyread $SAMPLES/amoeba.brep" "qtsplit -l 8 a.qt" \
-	    "qtleaves t.qt" "qtleaves -n t.qt" "qtstats t.qt" "qt2svg t.qt"; do
+	    "qtleaves t.qt" "qtleaves -n t.qt" "qtstats t.qt" "qt2svg t.qt" \
+	    "qtbalance t.qt"; do
 		run -1 --separate-stderr bash -c "$cmd > /dev/full"
 		[[ "$stderr" == "${cmd%% *}: write error: No space left on device" ]] ||
 		    { echo "$cmd: $stderr"; return 1; }

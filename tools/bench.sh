@@ -1,10 +1,11 @@
 #!/bin/sh
 # bench.sh: time polyread and qtsplit on generated polygons, and qtleaves,
 # qtstats and qt2svg on the largest level-16 stream, qtcat merging two
-# shards of it against cat | wc -l, and qtmesh on a balanced level-16 tree
-# (elements/s in the cells_per_s column), print a table and the targets of
-# issue 3 (and 17's of qtcat, 10's of qtmesh) with their figures, and draw
-# samples/bench.svg.
+# shards of it against cat | wc -l, qtmesh on a balanced level-16 tree
+# (elements/s in the cells_per_s column) and qtbalance on the level-16
+# amoeba (leaves/s and peak RSS a leaf), print a table and the targets of
+# issue 3 (and 17's of qtcat, 10's of qtmesh and qtbalance) with their
+# figures, and draw samples/bench.svg.
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
@@ -310,6 +311,28 @@ for n in 1000 100000; do
 	deep "$n"
 done
 
+# balance: qtbalance on the amoeba at level 16, timed on the saved tree;
+# leaves/s counts the input's leaves, RSS is per leaf of the output.  Kept
+# in $tmp/balance for the targets.
+balance() {
+	[ -x ./qtbalance ] && [ -f samples/amoeba.brep ] || return 0
+	./polyread samples/amoeba.brep | ./qtsplit -l 16 >"$tmp/amoeba16.qt" ||
+		die "qtsplit failed on the amoeba"
+	peak ./qtbalance "$tmp/amoeba16.qt" >"$tmp/bal.qt" ||
+		die "qtbalance failed on the amoeba"
+	m=$(rss)
+	in=$(grep -c '^leaf' "$tmp/amoeba16.qt")
+	out=$(grep -c '^leaf' "$tmp/bal.qt")
+	t=$(timeit "$runs" "./qtbalance $tmp/amoeba16.qt")
+	echo "# qtbalance: amoeba level 16, $in leaves in, $out out:" \
+	    "$t s, peak RSS $m KB"
+	awk -v t="$t" -v i="$in" -v o="$out" -v m="$m" 'BEGIN {
+		printf "%.3f %.1f %.3f\n", i / t / 1e6,
+		    m == "-" ? -1 : m * 1024 / o, o / t / 1e6 }' >"$tmp/balance"
+	rm -f "$tmp/amoeba16.qt" "$tmp/bal.qt"
+}
+balance
+
 # A big stream for the readers: the largest star N = 10^3 output on hand.
 big=$(awk '$1 == "star" && $2 == 1000 && $3 <= 16 { l = $3; r = $4 }
     END { if (r) print l, r }' "$tmp/records")
@@ -471,7 +494,20 @@ if [ -s "$tmp/catmerge" ]; then
 	printf '%-58s %-22s %s\n' \
 	    "qtcat merges 2 shards (level $l) >= 0.5 x cat | wc -l" \
 	    "$ratio x lines/s" \
-	    "$(awk -v r="$ratio" 'BEGIN { print r >= 0.5 ? "PASS" : "FAIL" }')"
+	    "$(awk -v r="$ratio" 'BEGIN { print (r >= 0.5 ? "PASS" : "FAIL") }')"
+fi
+
+if [ -s "$tmp/balance" ]; then
+	read -r rate perleaf outrate <"$tmp/balance"
+	printf '%-58s %-22s %s\n' \
+	    "qtbalance, amoeba level 16, >= 2 M leaves/s (input)" \
+	    "$rate M leaves/s" \
+	    "$(awk -v r="$rate" 'BEGIN { print (r >= 2 ? "PASS" : "FAIL") }')"
+	printf '%-58s %-22s %s\n' \
+	    "qtbalance, amoeba level 16, peak RSS <= 64 B a leaf (output)" \
+	    "$perleaf B/leaf" \
+	    "$(awk -v b="$perleaf" 'BEGIN {
+		print (b < 0 ? "SKIP" : b <= 64 ? "PASS" : "FAIL") }')"
 fi
 
 if [ -n "$svg" ]; then

@@ -1,0 +1,330 @@
+/*
+ * The exact classifier of qtsplit, for every program that classifies cells
+ * from rings (qtsplit, qtbalance).
+ *
+ * A cell is partial when an edge meets its open interior.  Each cell gets
+ * the edges of its parent that meet it (exact orientation of the edge
+ * against the cell's corners), so a cell costs in proportion to the edges
+ * near it.  A cell without edges is full or empty by the even-odd parity of
+ * a point just inside its lower-left corner, carried from the parent: the
+ * parity changes once for every parent edge that crosses the short path
+ * between the two points, and only the parent's edges can.
+ *
+ * The edges of a cell are a list per level, indices into the edges: the
+ * lists of one path down the tree, each level's overwritten when the level
+ * above moves another child's edges down.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "qtree.h"
+
+struct edge {
+	double	ax, ay, bx, by;
+	double	xmin, ymin, xmax, ymax;
+};
+
+/* Per level: the cell's edges and, per edge, the children it meets. */
+struct worklist {
+	uint32_t	*edges;		/* into sp->edges */
+	unsigned char	*masks;
+	size_t		 cap;
+};
+
+struct splitter {
+	struct universe	 u;
+	double		 step[QT_MAXLEVEL + 1];	/* cell size by level */
+	struct edge	*edges;
+	unsigned char	*elevel;	/* per edge: its ring's level */
+	size_t		 nedges;
+	size_t		*rfirst;	/* per ring: its first edge, and one */
+	size_t		 nrings;	/* past the last ring's last */
+	struct worklist	 list[QT_MAXLEVEL + 2];
+};
+
+struct splitter *
+split_new(const struct universe *u)
+{
+	struct splitter *sp = xmalloc(sizeof(*sp));
+	int i;
+
+	memset(sp, 0, sizeof(*sp));
+	sp->u = *u;
+	for (i = 0; i <= QT_MAXLEVEL; i++)
+		sp->step[i] = ldexp(u->size, -i);
+	sp->rfirst = xmalloc(sizeof(*sp->rfirst));
+	sp->rfirst[0] = 0;
+	return sp;
+}
+
+void
+split_free(struct splitter *sp)
+{
+	int i;
+
+	if (sp == NULL)
+		return;
+	for (i = 0; i < QT_MAXLEVEL + 2; i++) {
+		free(sp->list[i].edges);
+		free(sp->list[i].masks);
+	}
+	free(sp->edges);
+	free(sp->elevel);
+	free(sp->rfirst);
+	free(sp);
+}
+
+/* Adds a ring's edges; rings count from 0 in the order they are added. */
+void
+split_addring(struct splitter *sp, const struct ring *ring)
+{
+	size_t i, nv = ring->n;
+
+	if (sp->nedges + nv > UINT32_MAX)
+		die(1, "too many edges: %zu", sp->nedges + nv);
+	sp->edges = xreallocarray(sp->edges, sp->nedges + nv,
+	    sizeof(*sp->edges));
+	sp->elevel = xreallocarray(sp->elevel, sp->nedges + nv, 1);
+	for (i = 0; i < nv; i++) {
+		struct edge *e = &sp->edges[sp->nedges];
+		struct point a = ring->v[i], b = ring->v[(i + 1) % nv];
+
+		e->ax = a.x, e->ay = a.y, e->bx = b.x, e->by = b.y;
+		e->xmin = fmin(a.x, b.x), e->xmax = fmax(a.x, b.x);
+		e->ymin = fmin(a.y, b.y), e->ymax = fmax(a.y, b.y);
+		sp->elevel[sp->nedges++] = QT_MAXLEVEL;
+	}
+	sp->rfirst = xreallocarray(sp->rfirst, sp->nrings + 2,
+	    sizeof(*sp->rfirst));
+	sp->rfirst[++sp->nrings] = sp->nedges;
+}
+
+size_t
+split_nrings(const struct splitter *sp)
+{
+	return sp->nrings;
+}
+
+void
+split_ringlevel(struct splitter *sp, size_t ring, int level)
+{
+	size_t i;
+
+	for (i = sp->rfirst[ring]; i < sp->rfirst[ring + 1]; i++)
+		sp->elevel[i] = level;
+}
+
+static int
+orient(const struct edge *e, double x, double y)
+{
+	return orient2d(e->ax, e->ay, e->bx, e->by, x, y);
+}
+
+/* The side of e on which (x, y) + (d, d^2) lies, d > 0 infinitesimal. */
+static int
+nudged(const struct edge *e, int o)
+{
+	if (o != 0)
+		return o;
+	if (e->ay != e->by)
+		return e->by > e->ay ? -1 : 1;
+	return e->bx > e->ax ? 1 : -1;
+}
+
+static void
+reserve(struct splitter *sp, int level, size_t n)
+{
+	struct worklist *l = &sp->list[level];
+
+	if (n <= l->cap)
+		return;
+	l->cap = n + n / 2 + 16;
+	l->edges = xreallocarray(l->edges, l->cap, sizeof(*l->edges));
+	l->masks = xreallocarray(l->masks, l->cap, sizeof(*l->masks));
+}
+
+/* Even-odd parity of the universe's reference point, by a ray to +x. */
+static int
+rootparity(const struct splitter *sp)
+{
+	size_t i;
+	int inside = 0;
+
+	for (i = 0; i < sp->nedges; i++) {
+		const struct edge *e = &sp->edges[i];
+		int s;
+
+		if ((e->ay > sp->u.y0) == (e->by > sp->u.y0))
+			continue;
+		s = nudged(e, orient(e, sp->u.x0, sp->u.y0));
+		if (e->by > e->ay ? s > 0 : s < 0)
+			inside ^= 1;
+	}
+	return inside;
+}
+
+/* The edges that meet the universe's open interior. */
+static size_t
+rootlist(struct splitter *sp)
+{
+	const struct universe *u = &sp->u;
+	double x1 = u->x0 + u->size, y1 = u->y0 + u->size;
+	size_t i, n = 0;
+
+	reserve(sp, 0, sp->nedges);
+	for (i = 0; i < sp->nedges; i++) {
+		const struct edge *e = &sp->edges[i];
+		int o[4], c, pos = 0, neg = 0;
+
+		if (!(e->xmin < x1 && e->xmax > u->x0 && e->ymin < y1 &&
+		    e->ymax > u->y0))
+			continue;
+		o[0] = orient(e, u->x0, u->y0);
+		o[1] = orient(e, x1, u->y0);
+		o[2] = orient(e, u->x0, y1);
+		o[3] = orient(e, x1, y1);
+		for (c = 0; c < 4; c++) {
+			pos |= o[c] > 0;
+			neg |= o[c] < 0;
+		}
+		if (pos && neg)
+			sp->list[0].edges[n++] = i;
+	}
+	return n;
+}
+
+size_t
+split_root(struct splitter *sp, int *inside)
+{
+	*inside = rootparity(sp);
+	return rootlist(sp);
+}
+
+/*
+ * Sorts the edges of cell (level, ix, iy) into its children: the level's
+ * masks get, per edge, a bit for each child whose open interior it meets.
+ * The parities of the children's reference points go to parity[0..3].
+ */
+void
+split_children(struct splitter *sp, int level, uint64_t ix, uint64_t iy,
+    size_t n, int inside, int parity[4])
+{
+	const uint32_t *list = sp->list[level].edges;
+	unsigned char *mask = sp->list[level].masks;
+	double gx[3], gy[3];
+	int bottom = 0, left = 0, middle = 0;
+	size_t k;
+
+	for (k = 0; k < 3; k++) {
+		gx[k] = sp->u.x0 + (double)(2 * ix + k) * sp->step[level + 1];
+		gy[k] = sp->u.y0 + (double)(2 * iy + k) * sp->step[level + 1];
+	}
+	for (k = 0; k < n; k++) {
+		const struct edge *e = &sp->edges[list[k]];
+		/* orientation at grid point (i, j) in s[3 * j + i]; 2: unknown */
+		signed char s[9] = { 2, 2, 2, 2, 2, 2, 2, 2, 2 };
+		int inx[2], iny[2], q, m = 0;
+
+		inx[0] = e->xmin < gx[1] && e->xmax > gx[0];
+		inx[1] = e->xmin < gx[2] && e->xmax > gx[1];
+		iny[0] = e->ymin < gy[1] && e->ymax > gy[0];
+		iny[1] = e->ymin < gy[2] && e->ymax > gy[1];
+		/*
+		 * Most edges, once cells are larger than they are, lie
+		 * strictly inside one child: they meet it and no other, and
+		 * cross none of the parity paths, which run along the
+		 * children's sides.
+		 */
+		if (inx[0] != inx[1] && iny[0] != iny[1]) {
+			int i = inx[1], j = iny[1];
+
+			if (e->xmin > gx[i] && e->xmax < gx[i + 1] &&
+			    e->ymin > gy[j] && e->ymax < gy[j + 1]) {
+				mask[k] = 1 << (2 * j + i);
+				continue;
+			}
+		}
+		for (q = 0; q < 4; q++) {
+			int i = q & 1, j = q >> 1, pos = 0, neg = 0, c;
+
+			if (!inx[i] || !iny[j])
+				continue;
+			for (c = 0; c < 4; c++) {
+				int gi = i + (c & 1), gj = j + (c >> 1);
+				signed char *o = &s[3 * gj + gi];
+
+				if (*o == 2)
+					*o = orient(e, gx[gi], gy[gj]);
+				pos |= *o > 0;
+				neg |= *o < 0;
+			}
+			if (pos && neg)
+				m |= 1 << q;
+		}
+		mask[k] = m;
+		/*
+		 * Crossings of the paths from the parent's point to the
+		 * children's: along the bottom to the middle, up the left
+		 * side, and up the middle line.
+		 */
+		if ((e->ay > gy[0]) != (e->by > gy[0])) {
+			if (s[0] == 2)
+				s[0] = orient(e, gx[0], gy[0]);
+			if (s[1] == 2)
+				s[1] = orient(e, gx[1], gy[0]);
+			bottom ^= nudged(e, s[0]) != nudged(e, s[1]);
+		}
+		if ((e->ax > gx[0]) != (e->bx > gx[0])) {
+			if (s[0] == 2)
+				s[0] = orient(e, gx[0], gy[0]);
+			if (s[3] == 2)
+				s[3] = orient(e, gx[0], gy[1]);
+			left ^= nudged(e, s[0]) != nudged(e, s[3]);
+		}
+		if ((e->ax > gx[1]) != (e->bx > gx[1])) {
+			if (s[1] == 2)
+				s[1] = orient(e, gx[1], gy[0]);
+			if (s[4] == 2)
+				s[4] = orient(e, gx[1], gy[1]);
+			middle ^= nudged(e, s[1]) != nudged(e, s[4]);
+		}
+	}
+	parity[0] = inside;
+	parity[1] = inside ^ bottom;
+	parity[2] = inside ^ left;
+	parity[3] = parity[1] ^ middle;
+}
+
+/* Moves the edges of child q from the level's list to the next level's. */
+size_t
+split_child(struct splitter *sp, int level, size_t n, int q)
+{
+	const uint32_t *list;
+	const unsigned char *mask;
+	uint32_t *out;
+	size_t k, m = 0;
+
+	reserve(sp, level + 1, n);
+	list = sp->list[level].edges;
+	mask = sp->list[level].masks;
+	out = sp->list[level + 1].edges;
+	for (k = 0; k < n; k++)
+		if (mask[k] >> q & 1)
+			out[m++] = list[k];
+	return m;
+}
+
+/* Whether a ring with an edge in the level's list allows level + 1. */
+int
+split_allows(const struct splitter *sp, int level, size_t n)
+{
+	const uint32_t *list = sp->list[level].edges;
+	size_t k;
+
+	for (k = 0; k < n; k++)
+		if (sp->elevel[list[k]] > level)
+			return 1;
+	return 0;
+}
