@@ -35,14 +35,14 @@ load test_helper
 	[ "${lines[1]}" = "universe 0 0 2" ]
 	printf '3 0 2\n1 1 2 1 1 2\n0 0 3 0 3 2 0 2\n' > r.brep
 	run -1 --separate-stderr polyread r.brep
-	[ "$stderr" = "polyread: r.brep:3: universe corners do not form a square (3 wide, 2 high)" ]
+	[ "$stderr" = "polyread: r.brep:3: universe corners do not form a square (3 wide, 2 high) (read as brep: no other format claims the first line; use -f to choose)" ]
 	[ -z "$output" ]
 }
 
 @test "brep: counts that lie are caught where the input ends" {
 	printf '1000000000 0 6\n0 0 1 0 1 1\n' > lie.brep
 	run -1 --separate-stderr polyread lie.brep
-	[ "$stderr" = "polyread: lie.brep:2: input ends after 3 of 1000000000 polygon vertices" ]
+	[ "$stderr" = "polyread: lie.brep:2: input ends after 3 of 1000000000 polygon vertices (read as brep: no other format claims the first line; use -f to choose)" ]
 }
 
 @test "xy: ring roles follow from nesting, islands in lakes included" {
@@ -191,18 +191,18 @@ ring 3 outer 4" ]
 
 @test "something that is not a number is an error" {
 	printf '0 0\n1 x\n0 1\n' > nan.xy
-	run -1 --separate-stderr polyread nan.xy
+	run -1 --separate-stderr polyread -f xy nan.xy
 	[ "$stderr" = "polyread: nan.xy:2: not a number: x" ]
 }
 
 @test "NaN, Inf and hexadecimal numbers are refused" {
 	for v in NaN nan Inf -inf 0x1p3 infinity; do
 		printf '0 0\n1 %s\n0 1\n' "$v" > v.xy
-		run -1 --separate-stderr polyread v.xy
+		run -1 --separate-stderr polyread -f xy v.xy
 		[ "$stderr" = "polyread: v.xy:2: not a number: $v" ]
 	done
 	printf '0 0\n1 1e400\n0 1\n' > big.xy
-	run -1 --separate-stderr polyread big.xy
+	run -1 --separate-stderr polyread -f xy big.xy
 	[ "$stderr" = "polyread: big.xy:2: number out of range: 1e400" ]
 }
 
@@ -323,11 +323,43 @@ ring 3 hole 3" ]
 	[[ "$stderr" == "polyread: late.xy:"[3-8]": "* ]]
 }
 
+@test "a UTF-8 byte order mark is skipped and CRLF line ends read in every format" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n' > want.xy
+	polyread want.xy > want.qt
+	printf '\357\273\277' > bom.xy
+	cat want.xy >> bom.xy
+	polyread bom.xy > got.qt
+	diff -u want.qt got.qt
+	sed 's/$/\r/' bom.xy > crlf.xy
+	polyread crlf.xy > got.qt
+	diff -u want.qt got.qt
+	printf '\357\273\277POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 1, 1 1))\r\n' > crlf.wkt
+	polyread crlf.wkt > got.qt
+	diff -u want.qt got.qt
+	printf '\357\273\2774 3 2\r\n0 0 4 0 4 4 0 4\r\n1 1 1 2 2 1\r\n0 0 4 0 4 4 0 4\r\n' > crlf.brep
+	polyread crlf.brep > got.qt
+	polyread -u 0,0,4 -l 2 want.xy > want4.qt
+	diff -u want4.qt got.qt
+}
+
+@test "a reader's error after detection says how the format was chosen" {
+	printf '0 0\n1 x\n0 1\n' > nan.xy
+	run -1 --separate-stderr polyread nan.xy
+	[ "$stderr" = "polyread: nan.xy:2: not a number: x (read as xy: the first line holds two fields; use -f to choose)" ]
+	printf '3 0 2\n0 0 1 0 0 1 2\n' > short.brep
+	run -1 --separate-stderr polyread short.brep
+	[ "$stderr" = "polyread: short.brep:2: input ends where universe y was expected (read as brep: no other format claims the first line; use -f to choose)" ]
+	# checks after reading are not about the format
+	printf '0 0\n1 1\n2 2\n' > flat.xy
+	run -1 --separate-stderr polyread flat.xy
+	[[ "$stderr" != *"read as"* ]]
+}
+
 @test "standard input is read when no file is given, and - names it" {
 	run -0 bash -c 'polyread < "$FIXTURES/square.xy" | sed -n 2p'
 	[ "$output" = "universe 1 1 2" ]
 	run -1 --separate-stderr bash -c 'printf "0 0\n1 x\n" | polyread -'
-	[ "$stderr" = "polyread: stdin:2: not a number: x" ]
+	[ "$stderr" = "polyread: stdin:2: not a number: x (read as xy: the first line holds two fields; use -f to choose)" ]
 }
 
 @test "an unknown option is a usage error" {

@@ -12,6 +12,7 @@
 #include "polyread.h"
 
 int verbose;
+const char *readas;
 
 /*
  * Detection tries the rows from the last up and takes the first that
@@ -19,10 +20,14 @@ int verbose;
  * goes last.  The -f message lists them in this order.
  */
 static const struct format formats[] = {
-	{ "brep",	isbrep,	parsebrep },
-	{ "xy",		isxy,	parsexy },
-	{ "wkt",	iswkt,	parsewkt },
-	{ "poly",	ispoly,	parsepoly },
+	{ "brep",	isbrep,	parsebrep,
+	    "no other format claims the first line" },
+	{ "xy",		isxy,	parsexy,
+	    "the first line holds two fields" },
+	{ "wkt",	iswkt,	parsewkt,
+	    "the first word starts with a letter" },
+	{ "poly",	ispoly,	parsepoly,
+	    "the first line holds four integers, the second 2" },
 };
 #define NFORMATS	(sizeof(formats) / sizeof(formats[0]))
 
@@ -88,6 +93,7 @@ parseuniverse(const char *arg, struct universe *u)
 static void
 readinput(struct input *in, const char *path, const struct format *forced)
 {
+	static char why[128];
 	const struct format *f;
 	struct src s;
 
@@ -95,9 +101,14 @@ readinput(struct input *in, const char *path, const struct format *forced)
 	f = detect(&s);
 	if (forced != NULL)
 		f = forced;
+	else {
+		snprintf(why, sizeof(why), "read as %s: %s", f->name, f->why);
+		readas = why;
+	}
 	s.p = s.buf;
 	s.line = 1;
 	f->parse(&s, in);
+	readas = NULL;
 	/* rings keep pointers to the name, not to the buffer */
 	free(s.buf);
 }

@@ -56,18 +56,22 @@ struct src {
 
 /*
  * A format: detect says whether an input, its scanner at the first data,
- * looks like one; parse adds the input's rings to in.
+ * looks like one; parse adds the input's rings to in; why says what
+ * detect saw, for messages.
  */
 struct format {
 	const char	*name;
 	int		(*detect)(const struct src *);
 	void		(*parse)(struct src *, struct input *);
+	const char	*why;
 };
 
 extern int verbose;		/* -v: report progress */
+extern const char *readas;	/* how the input being read was detected */
 
 /* src.c: reading a file, the token scanner, the rings being built */
 void	 readall(struct src *, const char *);
+void	 readerr(const char *, long, const char *, ...);
 int	 linefields(const char *, const char **, size_t *, int);
 int	 skipspace(struct src *);
 long	 lastline(const struct src *);

@@ -60,13 +60,13 @@ parsexy(struct src *s, struct input *in)
 		for (q = end; *q == ' ' || *q == '\t'; q++)
 			;
 		if (q == end || q == eol || *q == '\r')
-			errat(s->name, line, "expected two numbers, x y");
+			readerr(s->name, line, "expected two numbers, x y");
 		s->p = (char *)q;
 		y = xynumber(s, q, &end);
 		for (q = end; q < eol && isspace((unsigned char)*q); q++)
 			;
 		if (q != eol)
-			errat(s->name, line, "expected two numbers, x y");
+			readerr(s->name, line, "expected two numbers, x y");
 		if (r == NULL)
 			r = newring(in, s->name, line, UNKNOWN, -1);
 		addvertex(in, r, x, y, line);
