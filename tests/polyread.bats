@@ -342,6 +342,35 @@ ring 3 hole 3" ]
 	diff -u want4.qt got.qt
 }
 
+@test "xy: a header line naming the columns is skipped, not read as WKT" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n' > want.xy
+	polyread want.xy > want.qt
+	{ printf '# from a spreadsheet\nx y\n'; cat want.xy; } > head.xy
+	polyread head.xy > got.qt
+	diff -u want.qt got.qt
+	{ printf 'lon\tlat\n'; cat want.xy; } > head.txt
+	polyread -f xy head.txt > got.qt
+	diff -u want.qt got.qt
+	# a line of names before no numbers is still taken for WKT
+	printf 'x y\n' > word.txt
+	run -1 --separate-stderr polyread word.txt
+	[[ "$stderr" == "polyread: word.txt:1: expected POLYGON or MULTIPOLYGON: x (read as wkt: "* ]]
+}
+
+@test "wkt: EWKT's SRID=N; prefix is accepted and dropped" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n\n5 5\n6 5\n5 6\n' > want.xy
+	polyread want.xy > want.qt
+	cat > e.wkt <<-'EOF'
+	SRID=4326;POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 1, 1 1))
+	srid=32632; MULTIPOLYGON (((5 5, 6 5, 5 6, 5 5)))
+	EOF
+	polyread e.wkt > got.qt
+	diff -u want.qt got.qt
+	echo 'SRID=WGS84;POLYGON ((0 0, 4 0, 0 4, 0 0))' > bad.wkt
+	run -1 --separate-stderr polyread -f wkt bad.wkt
+	[ "$stderr" = "polyread: bad.wkt:1: expected an SRID, a number: WGS84;POLYGON" ]
+}
+
 @test "a reader's error after detection says how the format was chosen" {
 	printf '0 0\n1 x\n0 1\n' > nan.xy
 	run -1 --separate-stderr polyread nan.xy

@@ -1,6 +1,6 @@
 /*
  * wkt.c: POLYGON and MULTIPOLYGON in OGC well-known text, any number of
- * them, in any letter case.
+ * them, in any letter case, each perhaps after PostGIS's "SRID=N;".
  */
 #include <ctype.h>
 #include <stdio.h>
@@ -10,11 +10,11 @@
 #include "qtree.h"
 #include "polyread.h"
 
-/* The first word starts with a letter. */
+/* The first word starts with a letter, and is not an xy header's. */
 int
 iswkt(const struct src *s)
 {
-	return isalpha((unsigned char)*s->p);
+	return isalpha((unsigned char)*s->p) && !xyheader(s->p);
 }
 
 static int
@@ -125,10 +125,26 @@ refusezm(struct src *s)
 		    "supported");
 }
 
+/* EWKT's "SRID=N;" is dropped: coordinates are used as given. */
+static void
+srid(struct src *s)
+{
+	size_t n;
+
+	punct(s, '=');
+	skipspace(s);
+	if ((n = strspn(s->p, "0123456789")) == 0 || n > 9)
+		badtoken(s, "expected an SRID, a number");
+	s->p += n;
+	punct(s, ';');
+}
+
 void
 parsewkt(struct src *s, struct input *in)
 {
 	while (skipspace(s)) {
+		if (keyword(s, "SRID"))
+			srid(s);
 		if (keyword(s, "MULTIPOLYGON")) {
 			refusezm(s);
 			if (keyword(s, "EMPTY"))

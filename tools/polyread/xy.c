@@ -1,6 +1,6 @@
 /*
  * xy.c: one vertex "x y" a line, rings separated by a blank line; roles
- * follow from nesting.
+ * follow from nesting.  The first line may name the columns.
  */
 #include <ctype.h>
 #include <stdio.h>
@@ -14,6 +14,61 @@ int
 isxy(const struct src *s)
 {
 	return linefields(s->p, NULL, NULL, 0) == 2;
+}
+
+/* A column name starts with a letter, an underscore or a quote. */
+int
+isname(const char *f)
+{
+	return isalpha((unsigned char)*f) || *f == '_' || *f == '"';
+}
+
+static int
+namepair(const char *p)
+{
+	const char *f[2];
+	size_t len[2];
+
+	return linefields(p, f, len, 2) == 2 && isname(f[0]) && isname(f[1]);
+}
+
+/* The next line with data after the one at p, or NULL; counts lines. */
+const char *
+nextdata(const char *p, long *line)
+{
+	for (;;) {
+		if ((p = strchr(p, '\n')) == NULL)
+			return NULL;
+		p++;
+		++*line;
+		p += strspn(p, " \t\r\f\v");
+		if (*p != '\n' && *p != '#' && *p != '\0')
+			return p;
+		if (*p == '\0')
+			return NULL;
+	}
+}
+
+/*
+ * For detection, which would read "x y" as WKT: the line at p names two
+ * columns, and the next line of data is two numbers.
+ */
+int
+xyheader(const char *p)
+{
+	const char *f[2], *end;
+	size_t len[2];
+	double v;
+	long line = 0;
+	int i;
+
+	if (!namepair(p) || (p = nextdata(p, &line)) == NULL ||
+	    linefields(p, f, len, 2) != 2)
+		return 0;
+	for (i = 0; i < 2; i++)
+		if (parsereal(f[i], &end, &v) < 0 || end != f[i] + len[i])
+			return 0;
+	return 1;
 }
 
 static double
@@ -37,6 +92,13 @@ parsexy(struct src *s, struct input *in)
 	char *p = s->buf, *eol;
 	long line = 0;
 
+	/* a header line naming the columns is skipped */
+	if (skipspace(s) && namepair(s->p)) {
+		line = s->line;
+		if ((p = strchr(s->p, '\n')) == NULL)
+			return;
+		p++;
+	}
 	for (; *p != '\0'; p = *eol ? eol + 1 : eol) {
 		const char *q, *end;
 		double x, y;
