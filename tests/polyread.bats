@@ -357,6 +357,20 @@ ring 3 hole 3" ]
 	[[ "$stderr" == "polyread: word.txt:1: expected POLYGON or MULTIPOLYGON: x (read as wkt: "* ]]
 }
 
+@test "csv: x,y lines, a header line and blanks around the comma, read as xy" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n' > want.xy
+	polyread want.xy > want.qt
+	printf 'x,y\n0,0\n4, 0\n4 ,4\n0 , 4\n\n1,1\n1,2\n2,1\n' > a.csv
+	polyread a.csv > got.qt
+	diff -u want.qt got.qt
+	sed 's/ /,/' want.xy > b.txt
+	polyread -f csv b.txt > got.qt
+	diff -u want.qt got.qt
+	printf '0,0\n4,0,1\n' > c.csv
+	run -1 --separate-stderr polyread -f csv c.csv
+	[ "$stderr" = "polyread: c.csv:2: expected two numbers, x,y" ]
+}
+
 @test "wkt: EWKT's SRID=N; prefix is accepted and dropped" {
 	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n\n5 5\n6 5\n5 6\n' > want.xy
 	polyread want.xy > want.qt

@@ -1,5 +1,5 @@
 /*
- * polyread: read polygons in brep, xy, wkt or Triangle poly form, check
+ * polyread: read polygons in brep, xy, wkt, Triangle poly or csv form, check
  * that they make a valid region, and write them as a qtree(5) stream of
  * rings: outer rings counter-clockwise, holes clockwise.
  */
@@ -28,6 +28,8 @@ static const struct format formats[] = {
 	    "the first word starts with a letter" },
 	{ "poly",	ispoly,	parsepoly,
 	    "the first line holds four integers, the second 2" },
+	{ "csv",	iscsv,	parsecsv,
+	    "the first line is two fields separated by a comma" },
 };
 #define NFORMATS	(sizeof(formats) / sizeof(formats[0]))
 

@@ -96,6 +96,8 @@ int	 iswkt(const struct src *);
 void	 parsewkt(struct src *, struct input *);
 int	 ispoly(const struct src *);
 void	 parsepoly(struct src *, struct input *);
+int	 iscsv(const struct src *);
+void	 parsecsv(struct src *, struct input *);
 
 /* valid.c: each ring alone, how rings nest, the universe, orientation */
 long	 ringno(const struct input *, const struct inring *);
