@@ -371,6 +371,94 @@ ring 3 hole 3" ]
 	[ "$stderr" = "polyread: c.csv:2: expected two numbers, x,y" ]
 }
 
+@test "geojson: Polygon, MultiPolygon, GeometryCollection, Feature and FeatureCollection read as xy" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n\n5 5\n6 5\n5 6\n' > want.xy
+	polyread want.xy > want.qt
+	sq='[[[0,0],[4,0],[4,4],[0,4],[0,0]],[[1,1],[1,2],[2,1],[1,1]]]'
+	tri='[[[5,5],[6,5],[5,6],[5,5]]]'
+	printf '{"type":"MultiPolygon","coordinates":[%s,%s]}\n' "$sq" "$tri" > m.geojson
+	polyread m.geojson > got.qt
+	diff -u want.qt got.qt
+	printf '{"type":"GeometryCollection","geometries":[{"type":"Polygon","coordinates":%s},{"type":"Polygon","coordinates":%s}]}' "$sq" "$tri" > g.geojson
+	polyread g.geojson > got.qt
+	diff -u want.qt got.qt
+	printf '{"type":"Feature","properties":null,"geometry":{"type":"MultiPolygon","coordinates":[%s,%s]}}' "$sq" "$tri" > f.geojson
+	polyread f.geojson > got.qt
+	diff -u want.qt got.qt
+	cat > fc.geojson <<-EOF
+	{
+	  "type": "FeatureCollection",
+	  "features": [
+	    { "type": "Feature", "id": 1, "properties": { "name": "square" },
+	      "geometry": { "type": "Polygon", "coordinates": $sq } },
+	    { "geometry": { "coordinates": $tri, "type": "Polygon" },
+	      "properties": { "name": "triangle", "note": "unknown members: \"ignored\" \u00e9" },
+	      "type": "Feature", "bbox": [5, 5, 6, 6] }
+	  ]
+	}
+	EOF
+	polyread fc.geojson > got.qt
+	diff -u want.qt got.qt
+}
+
+@test "geojson: the sample reads to the rings its coordinates give, taken apart by awk" {
+	awk '{ sub(/.*"coordinates":\[\[\[/, ""); sub(/\]\]\]\}.*/, "")
+	    gsub(/\]\],\[\[/, "\n\n"); gsub(/\],\[/, "\n"); gsub(/,/, " "); print }' \
+	    "$SAMPLES/zaf_ne110m.geojson" > zaf.xy
+	[ "$(grep -c . zaf.xy)" -eq 94 ]
+	polyread zaf.xy > want.qt
+	polyread "$SAMPLES/zaf_ne110m.geojson" > got.qt
+	diff -u want.qt got.qt
+}
+
+@test "geojson: -F chooses a feature by number or by a property" {
+	tri='[[[5,5],[6,5],[5,6],[5,5]]]'
+	cat > fc.geojson <<-EOF
+	{"type": "FeatureCollection", "features": [
+	  {"type": "Feature", "properties": {"name": "a", "rank": 1},
+	   "geometry": {"type": "Polygon", "coordinates": [[[0,0],[4,0],[0,4],[0,0]]]}},
+	  {"type": "Feature", "properties": {"name": "b", "rank": 2},
+	   "geometry": {"type": "LineString", "coordinates": [[0,0],[1,1]]}},
+	  {"type": "Feature", "properties": {"name": "caf\u00e9", "rank": 3},
+	   "geometry": {"type": "Polygon", "coordinates": $tri}}
+	]}
+	EOF
+	printf '5 5\n6 5\n5 6\n' > want.xy
+	polyread want.xy > want.qt
+	for f in 3 name=café rank=3 rank=3.0; do
+		polyread -F "$f" fc.geojson > got.qt
+		diff -u want.qt got.qt
+	done
+	run -1 --separate-stderr polyread fc.geojson
+	[[ "$stderr" == "polyread: fc.geojson:5: a LineString bounds no region: only Polygon and MultiPolygon geometries are read ("* ]]
+	run -1 --separate-stderr polyread -F 2 fc.geojson
+	[[ "$stderr" == "polyread: fc.geojson:5: a LineString bounds no region"* ]]
+	run -1 --separate-stderr polyread -F name=c fc.geojson
+	[[ "$stderr" == "polyread: fc.geojson: -F name=c: no such feature among the 3 in the input ("* ]]
+	run -2 --separate-stderr polyread -F 0 fc.geojson
+	[ "$stderr" = "polyread: -F: expected a feature number from 1, or name=value: 0" ]
+	run -2 --separate-stderr polyread -F 1 want.xy
+	[ "$stderr" = "polyread: -F: want.xy is read as xy: only GeoJSON has features" ]
+}
+
+@test "geojson: a third coordinate, the altitude, is dropped; a fourth is an error" {
+	printf '0 0\n4 0\n0 4\n' > want.xy
+	polyread want.xy > want.qt
+	echo '{"type":"Polygon","coordinates":[[[0,0,10],[4,0,20],[0,4,30],[0,0,10]]]}' > z.geojson
+	polyread z.geojson > got.qt
+	diff -u want.qt got.qt
+	echo '{"type":"Polygon","coordinates":[[[0,0,1,2],[4,0],[0,4],[0,0]]]}' > m.geojson
+	run -1 --separate-stderr polyread -f geojson m.geojson
+	[ "$stderr" = "polyread: m.geojson:1: position with more than 3 numbers" ]
+}
+
+@test "polyread(1): the GeoJSON example prints what the page says" {
+	run -0 bash -c "polyread -F 'name=South Africa' \"\$SAMPLES/zaf_ne110m.geojson\" |
+	    qtsplit -l 8 | qtstats | grep '^polygon_area'"
+	[ "$output" = "polygon_area 112.71852362041122" ]
+	grep -q "^$output\$" "$TOP/man/polyread.1"
+}
+
 @test "wkt: EWKT's SRID=N; prefix is accepted and dropped" {
 	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n\n5 5\n6 5\n5 6\n' > want.xy
 	polyread want.xy > want.qt

@@ -36,7 +36,7 @@ export AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES AFL_SKIP_CRASHES
 
 mkdir -p "$out"
 bad=0
-for target in brep xy wkt poly csv qtree cells; do
+for target in brep xy wkt poly csv geojson qtree cells; do
 	case $target in
 	qtree)	set -- tests/fuzz/qtsplit -l 3 @@ ;;
 	cells)	set -- tests/fuzz/qtstats -l @@ ;;

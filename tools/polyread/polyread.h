@@ -98,6 +98,9 @@ int	 ispoly(const struct src *);
 void	 parsepoly(struct src *, struct input *);
 int	 iscsv(const struct src *);
 void	 parsecsv(struct src *, struct input *);
+int	 isgeojson(const struct src *);
+void	 parsegeojson(struct src *, struct input *);
+void	 choosefeature(const char *);
 
 /* valid.c: each ring alone, how rings nest, the universe, orientation */
 long	 ringno(const struct input *, const struct inring *);
