@@ -14,7 +14,7 @@
  * neither holds a blank or a parenthesis (which a WKT line would).
  */
 static int
-csvpair(const char *p)
+csvfields(const char *p)
 {
 	int n = 0;
 
@@ -36,7 +36,7 @@ csvpair(const char *p)
 int
 iscsv(const struct src *s)
 {
-	return csvpair(s->p);
+	return csvfields(s->p);
 }
 
 static double
@@ -54,56 +54,40 @@ csvnumber(struct src *s, const char *q, const char **end)
 	return v;
 }
 
-/* Line by line, as xy. */
+/* A header line naming the columns. */
+static int
+csvheader(struct src *s)
+{
+	const char *q;
+
+	if (!isname(s->p) || !csvfields(s->p))
+		return 0;
+	q = s->p + strcspn(s->p, ",") + 1;
+	if (!isname(q + strspn(q, " \t")))
+		readerr(s->name, s->line, "expected two numbers, x,y, or a "
+		    "header of two names");
+	return 1;
+}
+
+static void
+csvpair(struct src *s, const char *q, const char *eol, double *x, double *y)
+{
+	const char *end;
+
+	*x = csvnumber(s, q, &end);
+	q = end + strspn(end, " \t");
+	if (*q != ',')
+		readerr(s->name, s->line, "expected two numbers, x,y");
+	q += 1 + strspn(q + 1, " \t");
+	*y = csvnumber(s, q, &end);
+	for (q = end; q < eol && isspace((unsigned char)*q); q++)
+		;
+	if (q != eol)
+		readerr(s->name, s->line, "expected two numbers, x,y");
+}
+
 void
 parsecsv(struct src *s, struct input *in)
 {
-	struct inring *r = NULL;
-	char *p = s->buf, *eol;
-	long line = 0;
-
-	/* a header line naming the columns is skipped */
-	if (skipspace(s) && isname(s->p) && csvpair(s->p)) {
-		const char *q = s->p + strcspn(s->p, ",") + 1;
-
-		if (!isname(q + strspn(q, " \t")))
-			readerr(s->name, s->line, "expected two numbers, x,y, "
-			    "or a header of two names");
-		line = s->line;
-		if ((p = strchr(s->p, '\n')) == NULL)
-			return;
-		p++;
-	}
-	for (; *p != '\0'; p = *eol ? eol + 1 : eol) {
-		const char *q, *end;
-		double x, y;
-
-		line++;
-		eol = strchr(p, '\n');
-		if (eol == NULL)
-			eol = p + strlen(p);
-		for (q = p; q < eol && (*q == ' ' || *q == '\t' || *q == '\r');
-		    q++)
-			;
-		if (q == eol) {
-			r = NULL;	/* a blank line ends the ring */
-			continue;
-		}
-		if (*q == '#')
-			continue;
-		s->line = line;
-		x = csvnumber(s, q, &end);
-		q = end + strspn(end, " \t");
-		if (*q != ',')
-			readerr(s->name, line, "expected two numbers, x,y");
-		q += 1 + strspn(q + 1, " \t");
-		y = csvnumber(s, q, &end);
-		for (q = end; q < eol && isspace((unsigned char)*q); q++)
-			;
-		if (q != eol)
-			readerr(s->name, line, "expected two numbers, x,y");
-		if (r == NULL)
-			r = newring(in, s->name, line, UNKNOWN, -1);
-		addvertex(in, r, x, y, line);
-	}
+	parselines(s, in, csvheader, csvpair);
 }

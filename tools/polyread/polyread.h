@@ -89,6 +89,9 @@ int	 isbrep(const struct src *);
 void	 parsebrep(struct src *, struct input *);
 int	 isxy(const struct src *);
 void	 parsexy(struct src *, struct input *);
+void	 parselines(struct src *, struct input *, int (*)(struct src *),
+	    void (*)(struct src *, const char *, const char *, double *,
+	    double *));
 int	 isname(const char *);
 const char *nextdata(const char *, long *);
 int	 xyheader(const char *);

@@ -84,23 +84,53 @@ xynumber(struct src *s, const char *q, const char **end)
 	return v;
 }
 
-/* Line by line, not token by token: a line break means something here. */
+static int
+xyheader1(struct src *s)
+{
+	return namepair(s->p);
+}
+
+static void
+xypair(struct src *s, const char *q, const char *eol, double *x, double *y)
+{
+	const char *end;
+
+	s->p = (char *)q;
+	*x = xynumber(s, q, &end);
+	for (q = end; *q == ' ' || *q == '\t'; q++)
+		;
+	if (q == end || q == eol || *q == '\r')
+		readerr(s->name, s->line, "expected two numbers, x y");
+	s->p = (char *)q;
+	*y = xynumber(s, q, &end);
+	for (q = end; q < eol && isspace((unsigned char)*q); q++)
+		;
+	if (q != eol)
+		readerr(s->name, s->line, "expected two numbers, x y");
+}
+
+/*
+ * Line by line, not token by token: a line break means something here.
+ * For xy and csv: the first line of data is skipped when header says it
+ * names the columns, and pair reads the vertex on each line of data.
+ */
 void
-parsexy(struct src *s, struct input *in)
+parselines(struct src *s, struct input *in, int (*header)(struct src *),
+    void (*pair)(struct src *, const char *, const char *, double *,
+    double *))
 {
 	struct inring *r = NULL;
 	char *p = s->buf, *eol;
 	long line = 0;
 
-	/* a header line naming the columns is skipped */
-	if (skipspace(s) && namepair(s->p)) {
+	if (skipspace(s) && header(s)) {
 		line = s->line;
 		if ((p = strchr(s->p, '\n')) == NULL)
 			return;
 		p++;
 	}
 	for (; *p != '\0'; p = *eol ? eol + 1 : eol) {
-		const char *q, *end;
+		const char *q;
 		double x, y;
 
 		line++;
@@ -117,20 +147,15 @@ parsexy(struct src *s, struct input *in)
 		if (*q == '#')
 			continue;
 		s->line = line;
-		s->p = (char *)q;
-		x = xynumber(s, q, &end);
-		for (q = end; *q == ' ' || *q == '\t'; q++)
-			;
-		if (q == end || q == eol || *q == '\r')
-			readerr(s->name, line, "expected two numbers, x y");
-		s->p = (char *)q;
-		y = xynumber(s, q, &end);
-		for (q = end; q < eol && isspace((unsigned char)*q); q++)
-			;
-		if (q != eol)
-			readerr(s->name, line, "expected two numbers, x y");
+		pair(s, q, eol, &x, &y);
 		if (r == NULL)
 			r = newring(in, s->name, line, UNKNOWN, -1);
 		addvertex(in, r, x, y, line);
 	}
+}
+
+void
+parsexy(struct src *s, struct input *in)
+{
+	parselines(s, in, xyheader1, xypair);
 }
