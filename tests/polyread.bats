@@ -35,14 +35,14 @@ load test_helper
 	[ "${lines[1]}" = "universe 0 0 2" ]
 	printf '3 0 2\n1 1 2 1 1 2\n0 0 3 0 3 2 0 2\n' > r.brep
 	run -1 --separate-stderr polyread r.brep
-	[ "$stderr" = "polyread: r.brep:3: universe corners do not form a square (3 wide, 2 high)" ]
+	[ "$stderr" = "polyread: r.brep:3: universe corners do not form a square (3 wide, 2 high) (read as brep: no other format claims the first line; use -f to choose)" ]
 	[ -z "$output" ]
 }
 
 @test "brep: counts that lie are caught where the input ends" {
 	printf '1000000000 0 6\n0 0 1 0 1 1\n' > lie.brep
 	run -1 --separate-stderr polyread lie.brep
-	[ "$stderr" = "polyread: lie.brep:2: input ends after 3 of 1000000000 polygon vertices" ]
+	[ "$stderr" = "polyread: lie.brep:2: input ends after 3 of 1000000000 polygon vertices (read as brep: no other format claims the first line; use -f to choose)" ]
 }
 
 @test "xy: ring roles follow from nesting, islands in lakes included" {
@@ -191,18 +191,18 @@ ring 3 outer 4" ]
 
 @test "something that is not a number is an error" {
 	printf '0 0\n1 x\n0 1\n' > nan.xy
-	run -1 --separate-stderr polyread nan.xy
+	run -1 --separate-stderr polyread -f xy nan.xy
 	[ "$stderr" = "polyread: nan.xy:2: not a number: x" ]
 }
 
 @test "NaN, Inf and hexadecimal numbers are refused" {
 	for v in NaN nan Inf -inf 0x1p3 infinity; do
 		printf '0 0\n1 %s\n0 1\n' "$v" > v.xy
-		run -1 --separate-stderr polyread v.xy
+		run -1 --separate-stderr polyread -f xy v.xy
 		[ "$stderr" = "polyread: v.xy:2: not a number: $v" ]
 	done
 	printf '0 0\n1 1e400\n0 1\n' > big.xy
-	run -1 --separate-stderr polyread big.xy
+	run -1 --separate-stderr polyread -f xy big.xy
 	[ "$stderr" = "polyread: big.xy:2: number out of range: 1e400" ]
 }
 
@@ -323,11 +323,184 @@ ring 3 hole 3" ]
 	[[ "$stderr" == "polyread: late.xy:"[3-8]": "* ]]
 }
 
+@test "a UTF-8 byte order mark is skipped and CRLF line ends read in every format" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n' > want.xy
+	polyread want.xy > want.qt
+	printf '\357\273\277' > bom.xy
+	cat want.xy >> bom.xy
+	polyread bom.xy > got.qt
+	diff -u want.qt got.qt
+	sed 's/$/\r/' bom.xy > crlf.xy
+	polyread crlf.xy > got.qt
+	diff -u want.qt got.qt
+	printf '\357\273\277POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 1, 1 1))\r\n' > crlf.wkt
+	polyread crlf.wkt > got.qt
+	diff -u want.qt got.qt
+	printf '\357\273\2774 3 2\r\n0 0 4 0 4 4 0 4\r\n1 1 1 2 2 1\r\n0 0 4 0 4 4 0 4\r\n' > crlf.brep
+	polyread crlf.brep > got.qt
+	polyread -u 0,0,4 -l 2 want.xy > want4.qt
+	diff -u want4.qt got.qt
+}
+
+@test "xy: a header line naming the columns is skipped, not read as WKT" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n' > want.xy
+	polyread want.xy > want.qt
+	{ printf '# from a spreadsheet\nx y\n'; cat want.xy; } > head.xy
+	polyread head.xy > got.qt
+	diff -u want.qt got.qt
+	{ printf 'lon\tlat\n'; cat want.xy; } > head.txt
+	polyread -f xy head.txt > got.qt
+	diff -u want.qt got.qt
+	# a line of names before no numbers is still taken for WKT
+	printf 'x y\n' > word.txt
+	run -1 --separate-stderr polyread word.txt
+	[[ "$stderr" == "polyread: word.txt:1: expected POLYGON or MULTIPOLYGON: x (read as wkt: "* ]]
+}
+
+@test "csv: x,y lines, a header line and blanks around the comma, read as xy" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n' > want.xy
+	polyread want.xy > want.qt
+	printf 'x,y\n0,0\n4, 0\n4 ,4\n0 , 4\n\n1,1\n1,2\n2,1\n' > a.csv
+	polyread a.csv > got.qt
+	diff -u want.qt got.qt
+	sed 's/ /,/' want.xy > b.txt
+	polyread -f csv b.txt > got.qt
+	diff -u want.qt got.qt
+	printf '0,0\n4,0,1\n' > c.csv
+	run -1 --separate-stderr polyread -f csv c.csv
+	[ "$stderr" = "polyread: c.csv:2: expected two numbers, x,y" ]
+}
+
+@test "geojson: Polygon, MultiPolygon, GeometryCollection, Feature and FeatureCollection read as xy" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n\n5 5\n6 5\n5 6\n' > want.xy
+	polyread want.xy > want.qt
+	sq='[[[0,0],[4,0],[4,4],[0,4],[0,0]],[[1,1],[1,2],[2,1],[1,1]]]'
+	tri='[[[5,5],[6,5],[5,6],[5,5]]]'
+	printf '{"type":"MultiPolygon","coordinates":[%s,%s]}\n' "$sq" "$tri" > m.geojson
+	polyread m.geojson > got.qt
+	diff -u want.qt got.qt
+	printf '{"type":"GeometryCollection","geometries":[{"type":"Polygon","coordinates":%s},{"type":"Polygon","coordinates":%s}]}' "$sq" "$tri" > g.geojson
+	polyread g.geojson > got.qt
+	diff -u want.qt got.qt
+	printf '{"type":"Feature","properties":null,"geometry":{"type":"MultiPolygon","coordinates":[%s,%s]}}' "$sq" "$tri" > f.geojson
+	polyread f.geojson > got.qt
+	diff -u want.qt got.qt
+	cat > fc.geojson <<-EOF
+	{
+	  "type": "FeatureCollection",
+	  "features": [
+	    { "type": "Feature", "id": 1, "properties": { "name": "square" },
+	      "geometry": { "type": "Polygon", "coordinates": $sq } },
+	    { "geometry": { "coordinates": $tri, "type": "Polygon" },
+	      "properties": { "name": "triangle", "note": "unknown members: \"ignored\" \u00e9" },
+	      "type": "Feature", "bbox": [5, 5, 6, 6] }
+	  ]
+	}
+	EOF
+	polyread fc.geojson > got.qt
+	diff -u want.qt got.qt
+}
+
+@test "geojson: the sample reads to the rings its coordinates give, taken apart by awk" {
+	awk '{ sub(/.*"coordinates":\[\[\[/, ""); sub(/\]\]\]\}.*/, "")
+	    gsub(/\]\],\[\[/, "\n\n"); gsub(/\],\[/, "\n"); gsub(/,/, " "); print }' \
+	    "$SAMPLES/zaf_ne110m.geojson" > zaf.xy
+	[ "$(grep -c . zaf.xy)" -eq 94 ]
+	polyread zaf.xy > want.qt
+	polyread "$SAMPLES/zaf_ne110m.geojson" > got.qt
+	diff -u want.qt got.qt
+}
+
+@test "geojson: -F chooses a feature by number or by a property" {
+	tri='[[[5,5],[6,5],[5,6],[5,5]]]'
+	cat > fc.geojson <<-EOF
+	{"type": "FeatureCollection", "features": [
+	  {"type": "Feature", "properties": {"name": "a", "rank": 1},
+	   "geometry": {"type": "Polygon", "coordinates": [[[0,0],[4,0],[0,4],[0,0]]]}},
+	  {"type": "Feature", "properties": {"name": "b", "rank": 2},
+	   "geometry": {"type": "LineString", "coordinates": [[0,0],[1,1]]}},
+	  {"type": "Feature", "properties": {"name": "caf\u00e9", "rank": 3},
+	   "geometry": {"type": "Polygon", "coordinates": $tri}}
+	]}
+	EOF
+	printf '5 5\n6 5\n5 6\n' > want.xy
+	polyread want.xy > want.qt
+	for f in 3 name=café rank=3 rank=3.0; do
+		polyread -F "$f" fc.geojson > got.qt
+		diff -u want.qt got.qt
+	done
+	run -1 --separate-stderr polyread fc.geojson
+	[[ "$stderr" == "polyread: fc.geojson:5: a LineString bounds no region: only Polygon and MultiPolygon geometries are read ("* ]]
+	run -1 --separate-stderr polyread -F 2 fc.geojson
+	[[ "$stderr" == "polyread: fc.geojson:5: a LineString bounds no region"* ]]
+	run -1 --separate-stderr polyread -F name=c fc.geojson
+	[[ "$stderr" == "polyread: fc.geojson: -F name=c: no such feature among the 3 in the input ("* ]]
+	run -2 --separate-stderr polyread -F 0 fc.geojson
+	[ "$stderr" = "polyread: -F: expected a feature number from 1, or name=value: 0" ]
+	run -2 --separate-stderr polyread -F 1 want.xy
+	[ "$stderr" = "polyread: -F: want.xy is read as xy: only GeoJSON has features" ]
+}
+
+@test "geojson: a third coordinate, the altitude, is dropped; a fourth is an error" {
+	printf '0 0\n4 0\n0 4\n' > want.xy
+	polyread want.xy > want.qt
+	echo '{"type":"Polygon","coordinates":[[[0,0,10],[4,0,20],[0,4,30],[0,0,10]]]}' > z.geojson
+	polyread z.geojson > got.qt
+	diff -u want.qt got.qt
+	echo '{"type":"Polygon","coordinates":[[[0,0,1,2],[4,0],[0,4],[0,0]]]}' > m.geojson
+	run -1 --separate-stderr polyread -f geojson m.geojson
+	[ "$stderr" = "polyread: m.geojson:1: position with more than 3 numbers" ]
+}
+
+@test "polyread(1): the GeoJSON example prints what the page says" {
+	run -0 bash -c "polyread -F 'name=South Africa' \"\$SAMPLES/zaf_ne110m.geojson\" |
+	    qtsplit -l 8 | qtstats | grep '^polygon_area'"
+	[ "$output" = "polygon_area 112.71852362041122" ]
+	grep -q "^$output\$" "$TOP/man/polyread.1"
+}
+
+@test "README: ogr2ogr's projected GeoJSON reads, its area in square metres" {
+	command -v ogr2ogr > /dev/null || skip "no ogr2ogr (Debian package gdal-bin)"
+	ogr2ogr -f GeoJSON -t_srs EPSG:6933 /vsistdout/ "$SAMPLES/zaf_ne110m.geojson" > p.geojson
+	run -0 bash -c "polyread -F 'name=South Africa' p.geojson | qtsplit -l 10 | qtstats |
+	    awk '\$1 == \"polygon_area\" { print \$2 }'"
+	# South Africa's 1.22 million square kilometres, Lesotho's 30,000 left out
+	awk -v a="$output" 'BEGIN { exit !(a > 1.20e12 && a < 1.23e12) }'
+	grep -q "ogr2ogr -f GeoJSON -t_srs EPSG:6933 /vsistdout/" "$TOP/README"
+}
+
+@test "wkt: EWKT's SRID=N; prefix is accepted and dropped" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 2\n2 1\n\n5 5\n6 5\n5 6\n' > want.xy
+	polyread want.xy > want.qt
+	cat > e.wkt <<-'EOF'
+	SRID=4326;POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 1, 1 1))
+	srid=32632; MULTIPOLYGON (((5 5, 6 5, 5 6, 5 5)))
+	EOF
+	polyread e.wkt > got.qt
+	diff -u want.qt got.qt
+	echo 'SRID=WGS84;POLYGON ((0 0, 4 0, 0 4, 0 0))' > bad.wkt
+	run -1 --separate-stderr polyread -f wkt bad.wkt
+	[ "$stderr" = "polyread: bad.wkt:1: expected an SRID, a number: WGS84;POLYGON" ]
+}
+
+@test "a reader's error after detection says how the format was chosen" {
+	printf '0 0\n1 x\n0 1\n' > nan.xy
+	run -1 --separate-stderr polyread nan.xy
+	[ "$stderr" = "polyread: nan.xy:2: not a number: x (read as xy: the first line holds two fields; use -f to choose)" ]
+	printf '3 0 2\n0 0 1 0 0 1 2\n' > short.brep
+	run -1 --separate-stderr polyread short.brep
+	[ "$stderr" = "polyread: short.brep:2: input ends where universe y was expected (read as brep: no other format claims the first line; use -f to choose)" ]
+	# checks after reading are not about the format
+	printf '0 0\n1 1\n2 2\n' > flat.xy
+	run -1 --separate-stderr polyread flat.xy
+	[[ "$stderr" != *"read as"* ]]
+}
+
 @test "standard input is read when no file is given, and - names it" {
 	run -0 bash -c 'polyread < "$FIXTURES/square.xy" | sed -n 2p'
 	[ "$output" = "universe 1 1 2" ]
 	run -1 --separate-stderr bash -c 'printf "0 0\n1 x\n" | polyread -'
-	[ "$stderr" = "polyread: stdin:2: not a number: x" ]
+	[ "$stderr" = "polyread: stdin:2: not a number: x (read as xy: the first line holds two fields; use -f to choose)" ]
 }
 
 @test "an unknown option is a usage error" {

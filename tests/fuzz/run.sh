@@ -36,7 +36,7 @@ export AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES AFL_SKIP_CRASHES
 
 mkdir -p "$out"
 bad=0
-for target in brep xy wkt poly qtree cells; do
+for target in brep xy wkt poly csv geojson qtree cells; do
 	case $target in
 	qtree)	set -- tests/fuzz/qtsplit -l 3 @@ ;;
 	cells)	set -- tests/fuzz/qtstats -l @@ ;;
@@ -53,7 +53,7 @@ for target in brep xy wkt poly qtree cells; do
 	execs=$(awk '$1 == "execs_done" { print $3 }' "$dir/fuzzer_stats")
 	crashes=$(find "$dir/crashes" -type f -name 'id:*' | wc -l)
 	hangs=$(find "$dir/hangs" -type f -name 'id:*' | wc -l)
-	printf 'fuzz %-5s %9s executions %3d crashes %3d hangs\n' \
+	printf 'fuzz %-7s %9s executions %3d crashes %3d hangs\n' \
 	    "$target" "$execs" "$crashes" "$hangs"
 	[ "$crashes" -eq 0 ] && [ "$hangs" -eq 0 ] || bad=1
 done

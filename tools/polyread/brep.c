@@ -59,18 +59,18 @@ cornersquare(struct src *s, long line, const double cx[4],
 
 		if ((cx[i] != xmin && cx[i] != xmax) ||
 		    (cy[i] != ymin && cy[i] != ymax))
-			errat(s->name, line, "universe corners do not form an "
-			    "axis-aligned square");
+			readerr(s->name, line, "universe corners do not form "
+			    "an axis-aligned square");
 		for (j = 0; j < 4; j++)
 			seen += cx[j] == cx[i] && cy[j] == cy[i];
 		if (seen != 1)
-			errat(s->name, line, "universe corners repeat a "
+			readerr(s->name, line, "universe corners repeat a "
 			    "corner");
 	}
 	w = xmax - xmin;
 	h = ymax - ymin;
 	if (w <= 0 || fabs(w - h) > 1e-9 * fmax(w, h))
-		errat(s->name, line, "universe corners do not form a square "
+		readerr(s->name, line, "universe corners do not form a square "
 		    "(%g wide, %g high)", w, h);
 	u->x0 = xmin;
 	u->y0 = ymin;
@@ -89,7 +89,7 @@ brepuniverse(struct src *s, struct input *in)
 	line = s->line;
 	for (i = 0; i < 4; i++) {
 		if (!skipspace(s))
-			errat(s->name, lastline(s), "input ends after %d of "
+			readerr(s->name, lastline(s), "input ends after %d of "
 			    "the 4 universe corners", i);
 		cx[i] = number(s, "universe x");
 		cy[i] = number(s, "universe y");
@@ -98,7 +98,7 @@ brepuniverse(struct src *s, struct input *in)
 		badtoken(s, "data after the universe corners");
 	cornersquare(s, line, cx, cy, &u);
 	if (in->haveuniverse)
-		errat(s->name, line, "a second universe (the first came from "
+		readerr(s->name, line, "a second universe (the first came from "
 		    "%s)", in->universefile);
 	in->universe = u;
 	in->haveuniverse = 1;
@@ -114,7 +114,7 @@ parsebrep(struct src *s, struct input *in)
 	nv = integer(s, "number of polygon vertices", 3, (long long)1 << 50);
 	nh = integer(s, "number of hole vertices", 0, (long long)1 << 50);
 	if (nh > 0 && nh < 3)
-		errat(s->name, s->line, "a hole needs at least 3 vertices");
+		readerr(s->name, s->line, "a hole needs at least 3 vertices");
 	level = integer(s, "tree level", 0, QT_MAXLEVEL);
 	brepring(s, in, OUTER, nv, "polygon vertices");
 	if (nh > 0)

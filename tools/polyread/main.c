@@ -1,7 +1,7 @@
 /*
- * polyread: read polygons in brep, xy, wkt or Triangle poly form, check
- * that they make a valid region, and write them as a qtree(5) stream of
- * rings: outer rings counter-clockwise, holes clockwise.
+ * polyread: read polygons in brep, xy, wkt, Triangle poly, csv or GeoJSON
+ * form, check that they make a valid region, and write them as a qtree(5)
+ * stream of rings: outer rings counter-clockwise, holes clockwise.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +12,7 @@
 #include "polyread.h"
 
 int verbose;
+const char *readas;
 
 /*
  * Detection tries the rows from the last up and takes the first that
@@ -19,18 +20,26 @@ int verbose;
  * goes last.  The -f message lists them in this order.
  */
 static const struct format formats[] = {
-	{ "brep",	isbrep,	parsebrep },
-	{ "xy",		isxy,	parsexy },
-	{ "wkt",	iswkt,	parsewkt },
-	{ "poly",	ispoly,	parsepoly },
+	{ "brep",	isbrep,	parsebrep,
+	    "no other format claims the first line" },
+	{ "xy",		isxy,	parsexy,
+	    "the first line holds two fields" },
+	{ "wkt",	iswkt,	parsewkt,
+	    "the first word starts with a letter" },
+	{ "poly",	ispoly,	parsepoly,
+	    "the first line holds four integers, the second 2" },
+	{ "csv",	iscsv,	parsecsv,
+	    "the first line is two fields separated by a comma" },
+	{ "geojson",	isgeojson, parsegeojson,
+	    "the input starts with '{'" },
 };
 #define NFORMATS	(sizeof(formats) / sizeof(formats[0]))
 
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: polyread [-v] [-f format] [-l level] "
-	    "[-u x0,y0,size] [file ...]\n");
+	fprintf(stderr, "usage: polyread [-v] [-F feature] [-f format] "
+	    "[-l level] [-u x0,y0,size] [file ...]\n");
 	exit(2);
 }
 
@@ -86,8 +95,10 @@ parseuniverse(const char *arg, struct universe *u)
 }
 
 static void
-readinput(struct input *in, const char *path, const struct format *forced)
+readinput(struct input *in, const char *path, const struct format *forced,
+    int choosing)
 {
+	static char why[128];
 	const struct format *f;
 	struct src s;
 
@@ -95,9 +106,17 @@ readinput(struct input *in, const char *path, const struct format *forced)
 	f = detect(&s);
 	if (forced != NULL)
 		f = forced;
+	else {
+		snprintf(why, sizeof(why), "read as %s: %s", f->name, f->why);
+		readas = why;
+	}
+	if (choosing && f->parse != parsegeojson)
+		die(2, "-F: %s is read as %s: only GeoJSON has features",
+		    s.name, f->name);
 	s.p = s.buf;
 	s.line = 1;
 	f->parse(&s, in);
+	readas = NULL;
 	/* rings keep pointers to the name, not to the buffer */
 	free(s.buf);
 }
@@ -151,11 +170,15 @@ main(int argc, char *argv[])
 	struct universe optu, u;
 	const char *end;
 	long long level = -1;
-	int ch, i, haveoptu = 0;
+	int ch, i, haveoptu = 0, choosing = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "f:l:u:v")) != -1)
+	while ((ch = getopt(argc, argv, "F:f:l:u:v")) != -1)
 		switch (ch) {
+		case 'F':
+			choosefeature(optarg);
+			choosing = 1;
+			break;
 		case 'f':
 			forced = formatnamed(optarg);
 			break;
@@ -181,7 +204,7 @@ main(int argc, char *argv[])
 	memset(&in, 0, sizeof(in));
 	in.level = -1;
 	for (i = 0; i == 0 || i < argc; i++)
-		readinput(&in, argc > 0 ? argv[i] : "-", forced);
+		readinput(&in, argc > 0 ? argv[i] : "-", forced, choosing);
 	check(&in);
 	/* -u wins over a universe the input declares, as polyread(1) says */
 	if (haveoptu) {

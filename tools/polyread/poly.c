@@ -48,8 +48,8 @@ polyvertices(struct src *s, struct polyfile *pf)
 
 	pf->nv = integer(s, "number of vertices", 0, (long long)1 << 40);
 	if (pf->nv == 0)
-		errat(s->name, s->line, "vertices in a separate .node file are "
-		    "not supported");
+		readerr(s->name, s->line, "vertices in a separate .node file "
+		    "are not supported");
 	integer(s, "dimension", 2, 2);
 	nattr = integer(s, "number of attributes", 0, 1000);
 	nbm = integer(s, "number of boundary markers", 0, 1);
@@ -61,7 +61,7 @@ polyvertices(struct src *s, struct polyfile *pf)
 		if (i == 0)
 			pf->base = id;
 		if (id != pf->base + i)
-			errat(s->name, s->line, "vertex %lld where %lld was "
+			readerr(s->name, s->line, "vertex %lld where %lld was "
 			    "expected", id, pf->base + i);
 		if ((size_t)i == cap) {
 			cap = cap ? 2 * cap : 64;
@@ -102,7 +102,7 @@ polysegments(struct src *s, struct polyfile *pf)
 		if (nsbm)
 			number(s, "boundary marker");
 		if (g->a == g->b)
-			errat(s->name, g->line, "segment joins a vertex to "
+			readerr(s->name, g->line, "segment joins a vertex to "
 			    "itself");
 	}
 }
@@ -163,8 +163,8 @@ polychain(struct src *s, struct input *in, const struct polyfile *pf)
 		long a = seg[i].a, b = seg[i].b;
 
 		if (deg[a] == 2 || deg[b] == 2)
-			errat(s->name, seg[i].line, "vertex %lld is on more than "
-			    "two segments: only rings are supported",
+			readerr(s->name, seg[i].line, "vertex %lld is on more "
+			    "than two segments: only rings are supported",
 			    (deg[a] == 2 ? a : b) + pf->base);
 		adj[2 * a + deg[a]++] = i;
 		adj[2 * b + deg[b]++] = i;
@@ -172,7 +172,7 @@ polychain(struct src *s, struct input *in, const struct polyfile *pf)
 	}
 	for (i = 0; i < pf->nv; i++)
 		if (deg[i] == 1)
-			errat(s->name, pf->ptline[i], "vertex %lld ends a "
+			readerr(s->name, pf->ptline[i], "vertex %lld ends a "
 			    "chain of segments that does not close",
 			    i + pf->base);
 	for (i = 0; i < pf->nseg; i++) {

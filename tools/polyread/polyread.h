@@ -56,18 +56,22 @@ struct src {
 
 /*
  * A format: detect says whether an input, its scanner at the first data,
- * looks like one; parse adds the input's rings to in.
+ * looks like one; parse adds the input's rings to in; why says what
+ * detect saw, for messages.
  */
 struct format {
 	const char	*name;
 	int		(*detect)(const struct src *);
 	void		(*parse)(struct src *, struct input *);
+	const char	*why;
 };
 
 extern int verbose;		/* -v: report progress */
+extern const char *readas;	/* how the input being read was detected */
 
 /* src.c: reading a file, the token scanner, the rings being built */
 void	 readall(struct src *, const char *);
+void	 readerr(const char *, long, const char *, ...);
 int	 linefields(const char *, const char **, size_t *, int);
 int	 skipspace(struct src *);
 long	 lastline(const struct src *);
@@ -85,10 +89,21 @@ int	 isbrep(const struct src *);
 void	 parsebrep(struct src *, struct input *);
 int	 isxy(const struct src *);
 void	 parsexy(struct src *, struct input *);
+void	 parselines(struct src *, struct input *, int (*)(struct src *),
+	    void (*)(struct src *, const char *, const char *, double *,
+	    double *));
+int	 isname(const char *);
+const char *nextdata(const char *, long *);
+int	 xyheader(const char *);
 int	 iswkt(const struct src *);
 void	 parsewkt(struct src *, struct input *);
 int	 ispoly(const struct src *);
 void	 parsepoly(struct src *, struct input *);
+int	 iscsv(const struct src *);
+void	 parsecsv(struct src *, struct input *);
+int	 isgeojson(const struct src *);
+void	 parsegeojson(struct src *, struct input *);
+void	 choosefeature(const char *);
 
 /* valid.c: each ring alone, how rings nest, the universe, orientation */
 long	 ringno(const struct input *, const struct inring *);

@@ -5,6 +5,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,6 +34,11 @@ readall(struct src *s, const char *path)
 	if (fp != stdin)
 		fclose(fp);
 	s->buf[s->len] = '\0';
+	/* a UTF-8 byte order mark says nothing to any format */
+	if (s->len >= 3 && memcmp(s->buf, "\xef\xbb\xbf", 3) == 0) {
+		s->len -= 3;
+		memmove(s->buf, s->buf + 3, s->len + 1);
+	}
 	if ((nul = memchr(s->buf, '\0', s->len)) != NULL) {
 		long line = 1;
 		char *q;
@@ -43,6 +49,24 @@ readall(struct src *s, const char *path)
 	}
 	s->p = s->buf;
 	s->line = 1;
+}
+
+/*
+ * A reader's error: errat, then, when the format was detected, how it was,
+ * so that a wrong guess shows.
+ */
+void
+readerr(const char *file, long line, const char *fmt, ...)
+{
+	char msg[512];
+	va_list ap;
+
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof(msg), fmt, ap);
+	va_end(ap);
+	if (readas != NULL)
+		errat(file, line, "%s (%s; use -f to choose)", msg, readas);
+	errat(file, line, "%s", msg);
 }
 
 /*
@@ -111,7 +135,7 @@ badtoken(struct src *s, const char *what)
 	memcpy(tok, s->p, n);
 	strcpy(tok + n, s->p[n] && !isspace((unsigned char)s->p[n]) ?
 	    "..." : "");
-	errat(s->name, s->line, "%s: %s", what, tok);
+	readerr(s->name, s->line, "%s: %s", what, tok);
 }
 
 double
@@ -122,8 +146,8 @@ number(struct src *s, const char *what)
 	int rc;
 
 	if (!skipspace(s))
-		errat(s->name, lastline(s), "input ends where %s was expected",
-		    what);
+		readerr(s->name, lastline(s), "input ends where %s was "
+		    "expected", what);
 	if ((rc = parsereal(s->p, &end, &v)) == -2)
 		badtoken(s, "number out of range");
 	if (rc < 0 || (*end != '\0' && !isspace((unsigned char)*end) &&
@@ -143,8 +167,8 @@ integer(struct src *s, const char *what, long long lo, long long hi)
 	line = s->line;
 	v = number(s, what);
 	if (v != floor(v) || v < (double)lo || v > (double)hi)
-		errat(s->name, line, "%s must be an integer from %lld to %lld",
-		    what, lo, hi);
+		readerr(s->name, line, "%s must be an integer from %lld "
+		    "to %lld", what, lo, hi);
 	return (long long)v;
 }
 
@@ -156,8 +180,8 @@ void
 expectmore(struct src *s, long long i, long long n, const char *what)
 {
 	if (!skipspace(s))
-		errat(s->name, lastline(s), "input ends after %lld of %lld %s",
-		    i, n, what);
+		readerr(s->name, lastline(s), "input ends after %lld of %lld "
+		    "%s", i, n, what);
 }
 
 struct inring *
@@ -183,9 +207,9 @@ void
 addvertex(struct input *in, struct inring *r, double x, double y, long line)
 {
 	if (isnan(x) || isnan(y) || isinf(x) || isinf(y))
-		errat(r->file, line, "coordinate is not a finite number");
+		readerr(r->file, line, "coordinate is not a finite number");
 	if (!coordok(x) || !coordok(y))
-		errat(r->file, line, "coordinate outside the supported range "
+		readerr(r->file, line, "coordinate outside the supported range "
 		    "(0, or 1e-100 to 1e100 in magnitude)");
 	if (r->n == r->cap) {
 		r->cap = r->cap ? 2 * r->cap : 16;

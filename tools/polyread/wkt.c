@@ -1,6 +1,6 @@
 /*
  * wkt.c: POLYGON and MULTIPOLYGON in OGC well-known text, any number of
- * them, in any letter case.
+ * them, in any letter case, each perhaps after PostGIS's "SRID=N;".
  */
 #include <ctype.h>
 #include <stdio.h>
@@ -10,11 +10,11 @@
 #include "qtree.h"
 #include "polyread.h"
 
-/* The first word starts with a letter. */
+/* The first word starts with a letter, and is not an xy header's. */
 int
 iswkt(const struct src *s)
 {
-	return isalpha((unsigned char)*s->p);
+	return isalpha((unsigned char)*s->p) && !xyheader(s->p);
 }
 
 static int
@@ -38,7 +38,7 @@ punct(struct src *s, int c)
 	if (!skipspace(s) || *s->p != c) {
 		snprintf(what, sizeof(what), "expected '%c'", c);
 		if (*s->p == '\0')
-			errat(s->name, lastline(s), "input ends: %s", what);
+			readerr(s->name, lastline(s), "input ends: %s", what);
 		badtoken(s, what);
 	}
 	s->p++;
@@ -76,17 +76,17 @@ wktring(struct src *s, struct input *in, int role)
 		y = number(s, "y");
 		if (peek(s, '-') || (skipspace(s) && (isdigit((unsigned char)
 		    *s->p) || *s->p == '.' || *s->p == '+')))
-			errat(s->name, s->line, "three or more coordinates per "
-			    "point: only x y is supported");
+			readerr(s->name, s->line, "three or more coordinates "
+			    "per point: only x y is supported");
 		addvertex(in, r, x, y, line);
 	} while (comma(s));
 	punct(s, ')');
 	if (r->n < 2 || r->v[0].x != r->v[r->n - 1].x ||
 	    r->v[0].y != r->v[r->n - 1].y)
-		errat(s->name, line, "ring is not closed (the last point must "
-		    "repeat the first)");
+		readerr(s->name, line, "ring is not closed (the last point "
+		    "must repeat the first)");
 	if (r->n < 4)
-		errat(s->name, line, "ring has fewer than 4 points");
+		readerr(s->name, line, "ring has fewer than 4 points");
 }
 
 static void
@@ -106,8 +106,8 @@ wktpolygon(struct src *s, struct input *in)
 			/* an empty shell may only have empty holes */
 			while (comma(s))
 				if (!keyword(s, "EMPTY"))
-					errat(s->name, s->line, "polygon with "
-					    "an empty shell has a hole");
+					readerr(s->name, s->line, "polygon "
+					    "with an empty shell has a hole");
 			break;
 		}
 		k++;
@@ -121,14 +121,30 @@ static void
 refusezm(struct src *s)
 {
 	if (keyword(s, "Z") || keyword(s, "M") || keyword(s, "ZM"))
-		errat(s->name, s->line, "Z and M coordinates are not "
+		readerr(s->name, s->line, "Z and M coordinates are not "
 		    "supported");
+}
+
+/* EWKT's "SRID=N;" is dropped: coordinates are used as given. */
+static void
+srid(struct src *s)
+{
+	size_t n;
+
+	punct(s, '=');
+	skipspace(s);
+	if ((n = strspn(s->p, "0123456789")) == 0 || n > 9)
+		badtoken(s, "expected an SRID, a number");
+	s->p += n;
+	punct(s, ';');
 }
 
 void
 parsewkt(struct src *s, struct input *in)
 {
 	while (skipspace(s)) {
+		if (keyword(s, "SRID"))
+			srid(s);
 		if (keyword(s, "MULTIPOLYGON")) {
 			refusezm(s);
 			if (keyword(s, "EMPTY"))

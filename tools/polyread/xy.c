@@ -1,6 +1,6 @@
 /*
  * xy.c: one vertex "x y" a line, rings separated by a blank line; roles
- * follow from nesting.
+ * follow from nesting.  The first line may name the columns.
  */
 #include <ctype.h>
 #include <stdio.h>
@@ -16,6 +16,61 @@ isxy(const struct src *s)
 	return linefields(s->p, NULL, NULL, 0) == 2;
 }
 
+/* A column name starts with a letter, an underscore or a quote. */
+int
+isname(const char *f)
+{
+	return isalpha((unsigned char)*f) || *f == '_' || *f == '"';
+}
+
+static int
+namepair(const char *p)
+{
+	const char *f[2];
+	size_t len[2];
+
+	return linefields(p, f, len, 2) == 2 && isname(f[0]) && isname(f[1]);
+}
+
+/* The next line with data after the one at p, or NULL; counts lines. */
+const char *
+nextdata(const char *p, long *line)
+{
+	for (;;) {
+		if ((p = strchr(p, '\n')) == NULL)
+			return NULL;
+		p++;
+		++*line;
+		p += strspn(p, " \t\r\f\v");
+		if (*p != '\n' && *p != '#' && *p != '\0')
+			return p;
+		if (*p == '\0')
+			return NULL;
+	}
+}
+
+/*
+ * For detection, which would read "x y" as WKT: the line at p names two
+ * columns, and the next line of data is two numbers.
+ */
+int
+xyheader(const char *p)
+{
+	const char *f[2], *end;
+	size_t len[2];
+	double v;
+	long line = 0;
+	int i;
+
+	if (!namepair(p) || (p = nextdata(p, &line)) == NULL ||
+	    linefields(p, f, len, 2) != 2)
+		return 0;
+	for (i = 0; i < 2; i++)
+		if (parsereal(f[i], &end, &v) < 0 || end != f[i] + len[i])
+			return 0;
+	return 1;
+}
+
 static double
 xynumber(struct src *s, const char *q, const char **end)
 {
@@ -29,16 +84,53 @@ xynumber(struct src *s, const char *q, const char **end)
 	return v;
 }
 
-/* Line by line, not token by token: a line break means something here. */
+static int
+xyheader1(struct src *s)
+{
+	return namepair(s->p);
+}
+
+static void
+xypair(struct src *s, const char *q, const char *eol, double *x, double *y)
+{
+	const char *end;
+
+	s->p = (char *)q;
+	*x = xynumber(s, q, &end);
+	for (q = end; *q == ' ' || *q == '\t'; q++)
+		;
+	if (q == end || q == eol || *q == '\r')
+		readerr(s->name, s->line, "expected two numbers, x y");
+	s->p = (char *)q;
+	*y = xynumber(s, q, &end);
+	for (q = end; q < eol && isspace((unsigned char)*q); q++)
+		;
+	if (q != eol)
+		readerr(s->name, s->line, "expected two numbers, x y");
+}
+
+/*
+ * Line by line, not token by token: a line break means something here.
+ * For xy and csv: the first line of data is skipped when header says it
+ * names the columns, and pair reads the vertex on each line of data.
+ */
 void
-parsexy(struct src *s, struct input *in)
+parselines(struct src *s, struct input *in, int (*header)(struct src *),
+    void (*pair)(struct src *, const char *, const char *, double *,
+    double *))
 {
 	struct inring *r = NULL;
 	char *p = s->buf, *eol;
 	long line = 0;
 
+	if (skipspace(s) && header(s)) {
+		line = s->line;
+		if ((p = strchr(s->p, '\n')) == NULL)
+			return;
+		p++;
+	}
 	for (; *p != '\0'; p = *eol ? eol + 1 : eol) {
-		const char *q, *end;
+		const char *q;
 		double x, y;
 
 		line++;
@@ -55,20 +147,15 @@ parsexy(struct src *s, struct input *in)
 		if (*q == '#')
 			continue;
 		s->line = line;
-		s->p = (char *)q;
-		x = xynumber(s, q, &end);
-		for (q = end; *q == ' ' || *q == '\t'; q++)
-			;
-		if (q == end || q == eol || *q == '\r')
-			errat(s->name, line, "expected two numbers, x y");
-		s->p = (char *)q;
-		y = xynumber(s, q, &end);
-		for (q = end; q < eol && isspace((unsigned char)*q); q++)
-			;
-		if (q != eol)
-			errat(s->name, line, "expected two numbers, x y");
+		pair(s, q, eol, &x, &y);
 		if (r == NULL)
 			r = newring(in, s->name, line, UNKNOWN, -1);
 		addvertex(in, r, x, y, line);
 	}
+}
+
+void
+parsexy(struct src *s, struct input *in)
+{
+	parselines(s, in, xyheader1, xypair);
 }
