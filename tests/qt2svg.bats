@@ -12,6 +12,7 @@ load test_helper
 
 F='#0072B2'
 E='#56B4E9'
+P='#E69F00'
 WHITE='#FFFFFF'
 
 need() {
@@ -353,15 +354,83 @@ mesh() {
 	[[ "$stderr" == *'no universe record'* ]]
 }
 
-@test "a million cells make a file that xmllint and rsvg-convert read" {
+@test "a million cells of 2 pixels make a file that xmllint and rsvg-convert read" {
 	need xmllint libxml2-utils
-	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 10 -m 10 | qt2svg > big.svg
+	# -w 2068: the map is 2048 pixels, a cell at level 10 is 2, its own
+	# square
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 10 -m 10 |
+	    qt2svg -w 2068 > big.svg
 	[ "$(squares big.svg | awk '{ n += $2 } END { print n }')" -eq 1048576 ]
 	[ "$(wc -c < big.svg)" -gt 10000000 ]
 	run -0 xmllint --noout big.svg
 	[ -z "$output" ]
 	need rsvg-convert librsvg2-bin
 	run -0 rsvg-convert -o big.png big.svg
+}
+
+@test "cells under 2 pixels are merged: the file is bounded by the picture" {
+	# at the default width a level-8 cell is 3 pixels, a level-9 one 1.5:
+	# each level-9 cell is a block, and deeper cells fall in blocks
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 9 a.qt | qt2svg > nine.svg
+	qtsplit -l 14 a.qt | qt2svg > fourteen.svg
+	# 32 times the partial leaves of level 9 (about 4^5 as many leaves)
+	# in no more than 1.3 times the bytes
+	[ "$(qtsplit -l 14 a.qt | grep -c ' P$')" -gt 80000 ]
+	n9=$(wc -c < nine.svg)
+	n14=$(wc -c < fourteen.svg)
+	[ "$n14" -le $((n9 * 13 / 10)) ]
+	# and no more rectangles than the map has blocks, 512 x 512
+	[ "$(squares fourteen.svg | awk '{ n += $2 } END { print n }')" -le 262144 ]
+}
+
+@test "outlines are drawn per level: a large cell keeps its outline beside tiny ones" {
+	# universe 0 0 4 at -w 100: 20 pixels per unit; the level-1 squares
+	# are 40 pixels, outlined; the level-7 leaf under quadrant 3 is 0.6
+	# pixels, merged into its level-6 block (1.25 pixels) at world (2, 2),
+	# pixel 50 50 its lower left corner; the next block to the right
+	# holds a full and an empty leaf, and so the boundary: partial too
+	cat > graded.qt <<-'EOF'
+	qtree 1
+	universe 0 0 4
+	leaf 0 1 0 0 0 0 2 F
+	leaf 1 1 1 0 2 0 2 F
+	leaf 2 1 0 1 0 2 2 E
+	leaf 3000000 7 64 64 2 2 0.03125 P
+	leaf 3000010 7 66 64 2.0625 2 0.03125 F
+	leaf 3000011 7 67 64 2.09375 2 0.03125 E
+	end 7
+	EOF
+	qt2svg -w 100 graded.qt > graded.svg
+	render graded.svg graded.png
+	# inside the full square 0: its colour; on the side it shares with
+	# square 1, at x 50: darker, the outline
+	run -0 pixel graded.png 30 70
+	[ "$output" = "$F" ]
+	run -0 pixel graded.png 50 70
+	[ "$output" != "$F" ]
+	run -0 pixel graded.png 49 70
+	[ "$output" != "$F" ]
+	# the partial blocks, with no outline
+	run -0 pixel graded.png 50 49
+	[ "$output" = "$P" ]
+	run -0 pixel graded.png 51 49
+	[ "$output" = "$P" ]
+}
+
+@test "a level-14 lake shows its partial band: orange pixels along the shore" {
+	need_shared
+	need rsvg-convert librsvg2-bin
+	need ppmhist netpbm
+	polyread "$SHARED/lakes/lake_victoria_ne10m.xy" | qtsplit -l 14 |
+	    qt2svg > v.svg
+	# 214491 partial leaves of about 0.05 pixels, in a band of blocks
+	# 1.5 pixels wide, most of it under the shore line
+	grep -q '>P partial 214491<' v.svg
+	render v.svg v.png
+	pngtopnm v.png | ppmhist -noheader |
+	    awk '$1 == 230 && $2 == 159 && $3 == 0 { n = $5 } END { print n + 0 }' > n
+	[ "$(cat n)" -ge 1000 ]
 }
 
 @test "the man page's example counts the leaves drawn" {
