@@ -93,13 +93,15 @@ mesh() {
 
 @test "a bad option prints the usage and exits 2" {
 	run -2 --separate-stderr qt2svg -x
-	[[ "$stderr" == *"usage: qt2svg [-nNv] [-c classes] [-m margin] [-w width] [file]" ]]
+	[[ "$stderr" == *"usage: qt2svg [-nNv] [-b x0,y0,x1,y1] [-c classes] [-m margin] [-w width] [file]" ]]
 	run -2 --separate-stderr qt2svg a b
 	[[ "$stderr" == *usage:* ]]
 }
 
-@test "-c takes only F, E and P; -w and -m take whole pixels that leave room" {
-	for bad in '-c Q' '-c FX' '-w 0' '-w 12.5' '-w x' '-m -1' '-w 100 -m 50'; do
+@test "-c takes only F, E and P; -w and -m take whole pixels that leave room; -b a window" {
+	for bad in '-c Q' '-c FX' '-w 0' '-w 12.5' '-w x' '-m -1' '-w 100 -m 50' \
+	    '-b 0,0,1' '-b 0,0,1,1,' '-b 0,0,1,x' '-b 0;0;1;1' '-b 1,0,0,1' \
+	    '-b 0,1,1,1' '-b 0,0,1e200,1'; do
 		run -2 --separate-stderr qt2svg $bad /dev/null
 		[[ "$stderr" == qt2svg:* ]]
 		[ -z "$output" ]
@@ -207,6 +209,82 @@ mesh() {
 	[ "$output" = "$WHITE" ]
 	run -0 pixel holed.png 130 50
 	[ "$output" = "$WHITE" ]
+}
+
+# The pixels of the holed square, a quarter of the universe 0 0 8, when it
+# fills the map at -w 180, 40 pixels per unit: world (x, y) is pixel
+# (10 + 40x, 10 + 40(4 - y)).  Drawn in the whole universe instead, each of
+# these pixels would be empty.
+quarter() {
+	run -0 pixel "$1" 30 30	# F cell 0 3, world 0.5 3.5
+	[ "$output" = "$F" ]
+	run -0 pixel "$1" 150 150	# F cell 3 0
+	[ "$output" = "$F" ]
+	run -0 pixel "$1" 150 30	# F cell 3 3
+	[ "$output" = "$F" ]
+	run -0 pixel "$1" 70 70	# the hole, cell 1 2
+	[ "$output" != "$F" ]
+}
+
+@test "a subtree drawn alone fills the picture: qtsplit -r 0 shows that quadrant" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 3\n3 3\n3 1\n' > holed.xy
+	polyread -u 0,0,8 -l 3 holed.xy | qtsplit -r 0 | qt2svg -w 180 > sub.svg
+	render sub.svg sub.png
+	quarter sub.png
+	run -0 pixel sub.png 70 70
+	[ "$output" = "$E" ]
+	# its leaves alone, without the nodes: the smallest cell holding them
+	polyread -u 0,0,8 -l 3 holed.xy | qtsplit -r 0 | qtleaves |
+	    qt2svg -w 180 > leaves.svg
+	render leaves.svg leaves.png
+	quarter leaves.png
+	# the whole tree still shows the universe
+	holed
+	qt2svg -w 180 holed.qt > whole.svg
+	render whole.svg whole.png
+	run -0 pixel whole.png 30 30
+	[ "$output" = "$E" ]
+}
+
+@test "-b draws a window: the cells in it fill the width, the others are left out" {
+	holed
+	qt2svg -w 180 -b 0,0,4,4 holed.qt > b.svg
+	render b.svg b.png
+	quarter b.png
+	run -0 pixel b.png 70 70
+	[ "$output" = "$E" ]
+	# the 12 F cells and the 4 in the hole; the three E quadrants only
+	# touch the window
+	grep -q '>F full 12<' b.svg
+	grep -q '>E empty 4<' b.svg
+	# a window twice as wide as high: 20 pixels per unit, the map 160 x 80
+	qt2svg -w 180 -b 0,0,8,4 holed.qt > wide.svg
+	render wide.svg wide.png
+	run -0 pixel wide.png 20 80	# world 0.5 0.5, F
+	[ "$output" = "$F" ]
+	run -0 pixel wide.png 130 50	# world 6 2, E
+	[ "$output" = "$E" ]
+	run -0 pixel wide.png 90 95	# below the map: the margin
+	[ "$output" = "$WHITE" ]
+	# a cell across the window's edge is cut at it: at -b 0,0,6,3, 80/3
+	# pixels per unit, the E quadrant 4..8 x 0..4 spans pixels 116.67 to
+	# 170 across (x 4 to 6) and 10 to 90 down (y 3 to 0)
+	qt2svg -w 180 -b 0,0,6,3 holed.qt | group leaves-E - > cut
+	grep -q '^<path d="M116.67 10h53.33v80h-53.33z"/>$' cut
+}
+
+@test "rings are cut at the window: vertices far outside it are left out" {
+	polyread "$SAMPLES/amoeba.brep" > rings.qt
+	# the amoeba's outer ring has 40 vertices, 41 with the first again
+	qt2svg rings.qt | group outer-rings - |
+	    grep -oE -- '-?[0-9.]+ -?[0-9.]+' | wc -l > all
+	[ "$(cat all)" -eq 41 ]
+	qt2svg -b 4,4,8,8 rings.qt | group outer-rings - |
+	    grep -oE -- '-?[0-9.]+ -?[0-9.]+' | wc -l > window
+	[ "$(cat window)" -lt 20 ]
+	[ "$(cat window)" -gt 0 ]
+	qt2svg -b 4,4,8,8 rings.qt |
+	    grep -q '^<g id="outer-rings" .*clip-path="url(#map)">$'
 }
 
 @test "the y axis points up: a region in the upper half fills the upper half" {

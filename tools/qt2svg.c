@@ -52,6 +52,8 @@ static struct options {
 	int	width, margin;	/* pixels */
 	int	drawn[NCLASS];	/* the leaf classes -c draws */
 	int	nflag, Nflag;	/* element numbers, vertex numbers */
+	int	bflag;		/* -b: a window */
+	double	bx0, by0, bx1, by1;
 } opt = { .width = 800, .margin = 10 };
 
 /* A leaf of 2 pixels or more, drawn as its own square. */
@@ -62,10 +64,10 @@ struct square {
 };
 
 /*
- * What the picture shows: a tree cell's square (d >= 0), and the grid of
- * the cells of level lb that it meets, the shallowest level whose cells
- * are under 2 pixels.  The grid's rows are made when a leaf first falls
- * in them.
+ * What the picture shows: a tree cell's square (d >= 0) or -b's rectangle
+ * (d < 0), and the grid of the cells of level lb that it meets, the
+ * shallowest level whose cells are under 2 pixels.  The grid's rows are
+ * made when a leaf first falls in them.
  */
 struct window {
 	int		 set;
@@ -111,8 +113,8 @@ static long long box[4];
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: qt2svg [-nNv] [-c classes] [-m margin] "
-	    "[-w width] [file]\n");
+	fprintf(stderr, "usage: qt2svg [-nNv] [-b x0,y0,x1,y1] [-c classes] "
+	    "[-m margin] [-w width] [file]\n");
 	exit(2);
 }
 
@@ -299,25 +301,62 @@ mapside(void)
 	return opt.width - 2 * opt.margin;
 }
 
+/* The side of a cell of this level, in pixels. */
+static double
+cellpixels(int level)
+{
+	return ldexp(pic.u.size, -level) * pic.win.scale;
+}
+
+/*
+ * The cells of side hb that the world's span [a, a + len] meets, a from
+ * the universe's corner, n in all, and one more on either side against
+ * rounding: the first and how many.
+ */
+static void
+span(double a, double len, double hb, double n, uint64_t *first,
+    size_t *count)
+{
+	double lo = floor(a / hb) - 1, hi = ceil((a + len) / hb) + 1;
+
+	lo = clamp(lo, 0, n);
+	hi = clamp(hi, lo, n);
+	*first = (uint64_t)lo;
+	*count = (size_t)(hi - lo);
+}
+
 /* The grid: its level and extent, no rows yet. */
 static void
 grid(struct window *w)
 {
-	int k;
+	int k, l;
 
 	w->lb = NOGRID;
 	w->gx = w->gy = 0;
 	w->gw = w->gh = 0;
 	w->rows = NULL;
-	/* The cell is mapside() pixels; its level-(d + k) cells, side / 2^k. */
-	for (k = 0; mapside() >= 2L << k; k++)
-		;
-	if (w->d + k > QT_MAXLEVEL)
-		return;
-	w->lb = w->d + k;
-	w->gx = w->cx << k;
-	w->gy = w->cy << k;
-	w->gw = w->gh = (size_t)1 << k;
+	if (w->d < 0) {
+		for (l = 0; l <= QT_MAXLEVEL && cellpixels(l) >= 2; l++)
+			;
+		if (l > QT_MAXLEVEL)
+			return;
+		w->lb = l;
+		span(w->x0 - pic.u.x0, w->w, ldexp(pic.u.size, -l),
+		    ldexp(1, l), &w->gx, &w->gw);
+		span(w->y0 - pic.u.y0, w->h, ldexp(pic.u.size, -l),
+		    ldexp(1, l), &w->gy, &w->gh);
+	} else {
+		/* The cell is mapside() pixels; its level-(d + k) cells,
+		   side / 2^k, counted exactly. */
+		for (k = 0; mapside() >= 2L << k; k++)
+			;
+		if (w->d + k > QT_MAXLEVEL)
+			return;
+		w->lb = w->d + k;
+		w->gx = w->cx << k;
+		w->gy = w->cy << k;
+		w->gw = w->gh = (size_t)1 << k;
+	}
 	w->rows = xreallocarray(NULL, w->gh, sizeof(*w->rows));
 	memset(w->rows, 0, w->gh * sizeof(*w->rows));
 }
@@ -339,11 +378,42 @@ block(int level, uint64_t ix, uint64_t iy, unsigned bits)
 	w->rows[by][bx] |= bits;
 }
 
-/* The window is the tree cell (d, cx, cy). */
+/*
+ * What an earlier window held, moved into the window now, which holds it:
+ * its blocks, and its squares that are now under 2 pixels.
+ */
+static void
+refill(struct window *old)
+{
+	struct square *s;
+	size_t i, j, n = 0;
+
+	for (j = 0; j < old->gh; j++) {
+		if (old->rows[j] == NULL)
+			continue;
+		for (i = 0; i < old->gw; i++)
+			if (old->rows[j][i] != 0)
+				block(old->lb, old->gx + i, old->gy + j,
+				    old->rows[j][i]);
+		free(old->rows[j]);
+	}
+	free(old->rows);
+	for (i = 0; i < pic.nsq; i++) {
+		s = &pic.sq[i];
+		if (s->level >= pic.win.lb)
+			block(s->level, s->ix, s->iy,
+			    CLASSBIT(classletter[s->k]));
+		else
+			pic.sq[n++] = *s;
+	}
+	pic.nsq = n;
+}
+
+/* The window is the tree cell (d, cx, cy), which holds the last one. */
 static void
 cellwindow(int d, uint64_t cx, uint64_t cy)
 {
-	struct window *w = &pic.win;
+	struct window *w = &pic.win, old = pic.win;
 
 	w->set = 1;
 	w->d = d;
@@ -355,6 +425,66 @@ cellwindow(int d, uint64_t cx, uint64_t cy)
 	w->scale = mapside() / w->w;
 	w->maph = mapside();
 	grid(w);
+	if (old.set)
+		refill(&old);
+}
+
+/* The window is -b's rectangle. */
+static void
+rectwindow(void)
+{
+	struct window *w = &pic.win;
+
+	w->set = 1;
+	w->d = -1;
+	w->x0 = opt.bx0;
+	w->y0 = opt.by0;
+	w->w = opt.bx1 - opt.bx0;
+	w->h = opt.by1 - opt.by0;
+	w->scale = mapside() / w->w;
+	w->maph = (hund(w->h * w->scale) + 99) / 100;
+	if (w->maph < 1)
+		w->maph = 1;
+	grid(w);
+}
+
+/*
+ * Without -b, the window is the smallest cell that holds every cell of
+ * the stream, their deepest common ancestor: the universe for a whole
+ * tree, the subtree's root for qtsplit -r.  It grows as cells come.
+ */
+static void
+seecell(const struct cell *c)
+{
+	struct window *w = &pic.win;
+	int d;
+
+	if (opt.bflag)
+		return;
+	if (!w->set) {
+		cellwindow(c->level, c->ix, c->iy);
+		return;
+	}
+	for (d = c->level < w->d ? c->level : w->d; d > 0; d--)
+		if (c->ix >> (c->level - d) == w->cx >> (w->d - d) &&
+		    c->iy >> (c->level - d) == w->cy >> (w->d - d))
+			break;
+	if (d < w->d)
+		cellwindow(d, w->cx >> (w->d - d), w->cy >> (w->d - d));
+}
+
+/* With -b, whether a cell meets the window's interior. */
+static int
+inwindow(const struct cell *c)
+{
+	const struct window *w = &pic.win;
+
+	if (w->d >= 0)
+		return 1;
+	return cellcoord(pic.u.x0, pic.u.size, c->level, c->ix + 1) > w->x0 &&
+	    c->x < w->x0 + w->w &&
+	    cellcoord(pic.u.y0, pic.u.size, c->level, c->iy + 1) > w->y0 &&
+	    c->y < w->y0 + w->h;
 }
 
 static void
@@ -363,7 +493,7 @@ leaf(const struct cell *c)
 	struct square *s;
 	int k = classindex(c->class);
 
-	if (!opt.drawn[k])
+	if (!opt.drawn[k] || !inwindow(c))
 		return;
 	pic.n[k]++;
 	if (c->level > pic.deepest)
@@ -518,13 +648,6 @@ cellrect(struct layer *ly, int level, uint64_t ix, uint64_t ix2, uint64_t iy)
 		rect(ly, level, ix, iy, r[0], r[2], r[3], r[1]);
 }
 
-/* The side of a cell of this level, in pixels. */
-static double
-cellpixels(int level)
-{
-	return ldexp(pic.u.size, -level) * pic.win.scale;
-}
-
 /*
  * The squares of class k level by level, each level's outlined in an
  * eighth of its side, at most a pixel; then the grid's blocks of class k,
@@ -674,9 +797,11 @@ rings(void)
 	int h;
 
 	snprintf(head[0], sizeof(head[0]), "<g id=\"outer-rings\" "
-	    "fill=\"none\" %s stroke-linejoin=\"round\">\n", ringstyle);
+	    "fill=\"none\" %s stroke-linejoin=\"round\" "
+	    "clip-path=\"url(#map)\">\n", ringstyle);
 	snprintf(head[1], sizeof(head[1]), "<g id=\"holes\" fill=\"none\" "
-	    "%s %s stroke-linejoin=\"round\">\n", ringstyle, holestyle);
+	    "%s %s stroke-linejoin=\"round\" clip-path=\"url(#map)\">\n",
+	    ringstyle, holestyle);
 	for (h = 0; h < 2; h++) {
 		rp[h].head = head[h];
 		for (i = 0; i < pic.nrings; i++)
@@ -757,7 +882,7 @@ elements(double f)
 	fmthund(num, hund(clamp(f / 8, 0.01, 1)));
 	snprintf(head, sizeof(head), "<g id=\"elements\" fill=\"none\" "
 	    "stroke=\"#000000\" stroke-width=\"%s\" "
-	    "stroke-linejoin=\"round\">\n", num);
+	    "stroke-linejoin=\"round\" clip-path=\"url(#map)\">\n", num);
 	ly.head = head;
 	ly.attrs = "";
 	for (i = 0; i < pic.nelems; i++, e += 1 + e[0]) {
@@ -786,7 +911,7 @@ vertices(double f)
 	fmthund(num, hund(clamp(f / 5, 0.5, 5)));
 	snprintf(head, sizeof(head), "<g id=\"vertices\" fill=\"none\" "
 	    "stroke=\"#000000\" stroke-width=\"%s\" "
-	    "stroke-linecap=\"round\">\n", num);
+	    "stroke-linecap=\"round\" clip-path=\"url(#map)\">\n", num);
 	ly.head = head;
 	ly.attrs = "";
 	for (i = 0; i < pic.nverts; i++) {
@@ -972,6 +1097,16 @@ svghead(long long height)
 	printf("<desc>universe %s %s %s, drawn by qt2svg</desc>\n", x0, y0,
 	    size);
 	outs("<rect width=\"100%\" height=\"100%\" fill=\"#FFFFFF\"/>\n");
+	/* Rings and the mesh are cut at the map, with room for strokes. */
+	outs("<defs><clipPath id=\"map\"><rect x=\"");
+	outhund(clipbox[0]);
+	outs("\" y=\"");
+	outhund(clipbox[1]);
+	outs("\" width=\"");
+	outhund(clipbox[2] - clipbox[0]);
+	outs("\" height=\"");
+	outhund(clipbox[3] - clipbox[1]);
+	outs("\"/></clipPath></defs>\n");
 }
 
 static void
@@ -981,6 +1116,8 @@ writesvg(void)
 	double f;
 	int k, rows = legendrows();
 
+	if (!w->set)
+		cellwindow(0, 0, 0);
 	box[0] = box[1] = opt.margin * 100LL;
 	box[2] = hund(opt.margin + w->w * w->scale);
 	box[3] = hund(opt.margin + w->h * w->scale);
@@ -1023,6 +1160,30 @@ pixels(int ch, const char *arg, long long lo)
 	return v;
 }
 
+/* -b x0,y0,x1,y1 */
+static void
+optwindow(const char *arg)
+{
+	double v[4];
+	const char *p = arg, *end;
+	int i;
+
+	for (i = 0; i < 4; i++) {
+		if (parsereal(p, &end, &v[i]) < 0 || !coordok(v[i]) ||
+		    *end != (i < 3 ? ',' : '\0'))
+			die(2, "-b: a window is four numbers x0,y0,x1,y1: %s",
+			    arg);
+		p = end + 1;
+	}
+	if (v[2] <= v[0] || v[3] <= v[1])
+		die(2, "-b: x1 must exceed x0, and y1 y0: %s", arg);
+	opt.bflag = 1;
+	opt.bx0 = v[0];
+	opt.by0 = v[1];
+	opt.bx1 = v[2];
+	opt.by1 = v[3];
+}
+
 int
 main(int argc, char *argv[])
 {
@@ -1033,8 +1194,11 @@ main(int argc, char *argv[])
 
 	setprogname_(argv[0]);
 	setdrawn(optclasses("FEP"));
-	while ((ch = getopt(argc, argv, "c:m:nNvw:")) != -1)
+	while ((ch = getopt(argc, argv, "b:c:m:nNvw:")) != -1)
 		switch (ch) {
+		case 'b':
+			optwindow(optarg);
+			break;
 		case 'c':
 			setdrawn(optclasses(optarg));
 			break;
@@ -1069,12 +1233,17 @@ main(int argc, char *argv[])
 		switch (kind) {
 		case QT_UNIVERSE:
 			pic.u = rec.u;
-			cellwindow(0, 0, 0);
+			if (opt.bflag)
+				rectwindow();
 			break;
 		case QT_RING:
 			ring(&rec.ring);
 			break;
+		case QT_NODE:
+			seecell(&rec.c);
+			break;
 		case QT_LEAF:
+			seecell(&rec.c);
 			leaf(&rec.c);
 			break;
 		case QT_VERTEX:
