@@ -231,6 +231,7 @@ quarter() {
 	polyread -u 0,0,8 -l 3 holed.xy | qtsplit -r 0 | qt2svg -w 180 > sub.svg
 	render sub.svg sub.png
 	quarter sub.png
+	grep -q '>level 3, window 0,0,4,4<' sub.svg
 	run -0 pixel sub.png 70 70
 	[ "$output" = "$E" ]
 	# its leaves alone, without the nodes: the smallest cell holding them
@@ -271,6 +272,49 @@ quarter() {
 	# 170 across (x 4 to 6) and 10 to 90 down (y 3 to 0)
 	qt2svg -w 180 -b 0,0,6,3 holed.qt | group leaves-E - > cut
 	grep -q '^<path d="M116.67 10h53.33v80h-53.33z"/>$' cut
+}
+
+@test "the legend gives a scale bar, the tree's level and the window" {
+	holed
+	# -w 180: 20 pixels per unit; a quarter of the map's 160 pixels is 2
+	# units, 40 pixels; the legend's five rows end at 10 + 160 + 10 +
+	# 5 * 16, the bar's row starts 2 pixels lower
+	qt2svg -w 180 holed.qt > h.svg
+	cat > want <<-'EOF'
+	<path d="M10 268h40M10 262v12M50 262v12" fill="none" stroke="#000000" stroke-width="1.5"/>
+	<text x="56" y="272.5">2 units</text>
+	<text x="10" y="288.5">level 3, window 0,0,8,8</text>
+	EOF
+	group legend h.svg | tail -n 3 > got
+	diff -u want got
+	grep -q '<desc>universe 0 0 8, window 0,0,8,8, drawn by qt2svg</desc>' h.svg
+	# a window of 3 units at 160 pixels: 0.5 units is 26.67 pixels
+	qt2svg -w 180 -b 1,1,4,2.5 holed.qt > b.svg
+	group legend b.svg | tail -n 3 > got
+	grep -q '^<path d="M10 [0-9.]*h26.67M' got
+	grep -q '>0.5 units<' got
+	grep -q '>level 3, window 1,1,4,2.5<' got
+}
+
+@test "numbers at the picture's edges are moved inside it" {
+	mesh
+	# -m 0: vertices 3, 6 and 9 lie on the right edge, x 200, and 7, 8
+	# and 9 on the top one; each number's text, 0.6 of its font size wide
+	# a digit and rising 0.75 of it, stays in the 200 pixels across and
+	# below y 0
+	qt2svg -w 200 -m 0 -nN mesh.qt > m.svg
+	fs=$(grep -o '<g id="vertex-numbers" [^>]*font-size="[0-9.]*"' m.svg |
+	    sed 's/.*font-size="//; s/"//')
+	[ "$fs" = 10 ]
+	group vertex-numbers m.svg | awk -F '"' -v fs="$fs" '
+	    { id = $0; sub(/<\/text>$/, "", id); sub(/.*>/, "", id)
+	      if ($2 + 0.6 * fs * length(id) > 200 || $4 - 0.75 * fs < 0)
+		print "out:", $0 }' > out
+	[ ! -s out ]
+	[ "$(group vertex-numbers m.svg | wc -l)" -eq 9 ]
+	group element-numbers m.svg | awk -F '"' '
+	    { if ($2 < 0 || $2 > 200 || $4 < 0 || $4 > 200) print "out:", $0 }' > out
+	[ ! -s out ]
 }
 
 @test "rings are cut at the window: vertices far outside it are left out" {

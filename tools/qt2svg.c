@@ -73,7 +73,8 @@ struct window {
 	int		 set;
 	int		 d;		/* the cell's level */
 	uint64_t	 cx, cy;
-	double		 x0, y0, w, h;	/* world */
+	double		 x0, y0, x1, y1;	/* world */
+	double		 w, h;
 	double		 scale;		/* pixels per world unit */
 	long long	 maph;		/* the map's height, whole pixels */
 	int		 lb;		/* the grid's level, NOGRID for none */
@@ -90,6 +91,7 @@ struct ringrec {
 /* The stream, as much of it as the picture needs. */
 static struct picture {
 	struct universe	 u;
+	int		 level;		/* the level record's, -1 for none */
 	struct window	 win;
 	struct square	*sq;
 	size_t		 nsq, sqcap;
@@ -105,7 +107,7 @@ static struct picture {
 	size_t		 nverts, vertcap;
 	unsigned long long *elems;	/* each: n, then n vertex ids */
 	size_t		 nelemw, elemcap, nelems;
-} pic = { .deepest = -1 };
+} pic = { .level = -1, .deepest = -1 };
 
 /* The map's edges in hundredths of a pixel, left, top, right, bottom. */
 static long long box[4];
@@ -421,6 +423,8 @@ cellwindow(int d, uint64_t cx, uint64_t cy)
 	w->cy = cy;
 	w->x0 = cellcoord(pic.u.x0, pic.u.size, d, cx);
 	w->y0 = cellcoord(pic.u.y0, pic.u.size, d, cy);
+	w->x1 = cellcoord(pic.u.x0, pic.u.size, d, cx + 1);
+	w->y1 = cellcoord(pic.u.y0, pic.u.size, d, cy + 1);
 	w->w = w->h = ldexp(pic.u.size, -d);
 	w->scale = mapside() / w->w;
 	w->maph = mapside();
@@ -439,6 +443,8 @@ rectwindow(void)
 	w->d = -1;
 	w->x0 = opt.bx0;
 	w->y0 = opt.by0;
+	w->x1 = opt.bx1;
+	w->y1 = opt.by1;
 	w->w = opt.bx1 - opt.bx0;
 	w->h = opt.by1 - opt.by0;
 	w->scale = mapside() / w->w;
@@ -1040,7 +1046,113 @@ legendrows(void)
 	for (k = 0; k < NCLASS; k++)
 		n += opt.drawn[k];
 	return n + (pic.nring[0] > 0) + (pic.nring[1] > 0) +
-	    (pic.nelems > 0) + (pic.nverts > 0);
+	    (pic.nelems > 0) + (pic.nverts > 0) + 2;
+}
+
+/*
+ * The scale bar's length in world units, 1, 2 or 5 times a power of ten,
+ * the largest that is at most a quarter of the map's width, as text; the
+ * bar is drawn from the value that text reads as.
+ */
+static double
+scalebar(char *text)
+{
+	double target = mapside() / 4.0 / pic.win.scale, v;
+	const char *end;
+	int k = (int)floor(log10(target)), digit, i;
+	char *p = text;
+
+	v = target / pow(10, k);
+	digit = v >= 5 ? 5 : v >= 2 ? 2 : 1;
+	if (k < -6 || k > 6)
+		snprintf(text, 32, "%de%d", digit, k);
+	else {
+		if (k < 0) {
+			*p++ = '0';
+			*p++ = '.';
+			for (i = -1; i > k; i--)
+				*p++ = '0';
+		}
+		*p++ = '0' + digit;
+		for (i = 0; i < k; i++)
+			*p++ = '0';
+		*p = '\0';
+	}
+	if (parsereal(text, &end, &v) < 0)
+		v = 0;
+	return v;
+}
+
+/* A window's coordinate, to a pixel or finer. */
+static char *
+fmtwindow(char *p, double v)
+{
+	int d = (int)clamp(ceil(log10(pic.win.scale)), 0, 17);
+	double t = pow(10, d), r = round(v * t) / t;
+
+	return fmtreal(p, isfinite(r) ? r : v);
+}
+
+/* The four corners, as -b takes them. */
+static void
+outwindow(int exact)
+{
+	const struct window *w = &pic.win;
+	char num[32];
+	double v[4] = { w->x0, w->y0, w->x1, w->y1 };
+	int i;
+
+	for (i = 0; i < 4; i++) {
+		if (exact)
+			fmtreal(num, v[i]);
+		else
+			fmtwindow(num, v[i]);
+		if (i > 0)
+			out(",", 1);
+		outs(num);
+	}
+}
+
+/* The scale bar, and the tree's level and the window. */
+static void
+legendscale(int row)
+{
+	char text[32];
+	long long top = mapbottom() + (long long)(ROW * row + 2) * 100;
+	long long x = (long long)opt.margin * 100;
+	long long len = hund(scalebar(text) * pic.win.scale);
+
+	outs("<path d=\"M");
+	outxy(x, top + 600);
+	out("h", 1);
+	outhund(len);
+	out("M", 1);
+	outxy(x, top);
+	outs("v12M");
+	outxy(x + len, top);
+	outs("v12\" fill=\"none\" stroke=\"#000000\" "
+	    "stroke-width=\"1.5\"/>\n<text x=\"");
+	outhund(x + len + 600);
+	outs("\" y=\"");
+	outhund(top + 1050);
+	outs("\">");
+	outs(text);
+	outs(strcmp(text, "1") == 0 ? " unit" : " units");
+	outs("</text>\n<text x=\"");
+	top += ROW * 100;
+	outhund(x);
+	outs("\" y=\"");
+	outhund(top + 1050);
+	outs("\">");
+	if (pic.level >= 0 || pic.deepest >= 0) {
+		fmtint(text, pic.level >= 0 ? pic.level : pic.deepest);
+		outs("level ");
+		outs(text);
+		outs(", ");
+	}
+	outs("window ");
+	outwindow(0);
+	outs("</text>\n");
 }
 
 static void
@@ -1049,8 +1161,6 @@ legend(void)
 	char swatch[256], text[32];
 	int k, row = 0;
 
-	if (legendrows() == 0)
-		return;
 	outs("<g id=\"legend\" font-family=\"sans-serif\" font-size=\"12\">\n");
 	for (k = 0; k < NCLASS; k++) {
 		if (!opt.drawn[k])
@@ -1079,6 +1189,7 @@ legend(void)
 	if (pic.nverts > 0)
 		legendrow(row++, "<rect fill=\"#000000\" rx=\"6\"",
 		    "vertices", pic.nverts);
+	legendscale(row);
 	outs("</g>\n");
 }
 
@@ -1094,8 +1205,9 @@ svghead(long long height)
 	fmtreal(x0, pic.u.x0);
 	fmtreal(y0, pic.u.y0);
 	fmtreal(size, pic.u.size);
-	printf("<desc>universe %s %s %s, drawn by qt2svg</desc>\n", x0, y0,
-	    size);
+	printf("<desc>universe %s %s %s, window ", x0, y0, size);
+	outwindow(1);
+	outs(", drawn by qt2svg</desc>\n");
 	outs("<rect width=\"100%\" height=\"100%\" fill=\"#FFFFFF\"/>\n");
 	/* Rings and the mesh are cut at the map, with room for strokes. */
 	outs("<defs><clipPath id=\"map\"><rect x=\"");
@@ -1124,8 +1236,7 @@ writesvg(void)
 	for (k = 0; k < 4; k++)
 		clipbox[k] = box[k] + (k < 2 ? -CLIPPAD : CLIPPAD);
 	f = finest();
-	svghead(mapbottom() / 100 + (long long)ROW * rows +
-	    (rows > 0 ? opt.margin : 0));
+	svghead(mapbottom() / 100 + (long long)ROW * rows + opt.margin);
 	for (k = 0; k < NCLASS; k++)
 		if (opt.drawn[k])
 			leaves(k);
@@ -1235,6 +1346,9 @@ main(int argc, char *argv[])
 			pic.u = rec.u;
 			if (opt.bflag)
 				rectwindow();
+			break;
+		case QT_LEVEL:
+			pic.level = rec.level;
 			break;
 		case QT_RING:
 			ring(&rec.ring);
