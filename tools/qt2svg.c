@@ -874,23 +874,34 @@ finest(void)
 	return f >= 0 ? f : mapside();
 }
 
+/* A layer of black lines, width pixels wide, clipped to the map. */
+static void
+strokelayer(struct layer *ly, char head[256], const char *id, double width,
+    const char *style)
+{
+	char num[32];
+
+	fmthund(num, hund(width));
+	snprintf(head, 256, "<g id=\"%s\" fill=\"none\" stroke=\"#000000\" "
+	    "stroke-width=\"%s\" %s clip-path=\"url(#map)\">\n", id, num,
+	    style);
+	ly->head = head;
+	ly->attrs = "";
+}
+
 /* Elements use only vertices defined before them. */
 static void
 elements(double f)
 {
 	const unsigned long long *e = pic.elems;
 	struct layer ly = { 0 };
-	char head[256], num[32];
+	char head[256];
 	long long b[4], c[2], x, y;
 	unsigned long long k;
 	size_t i;
 
-	fmthund(num, hund(clamp(f / 8, 0.01, 1)));
-	snprintf(head, sizeof(head), "<g id=\"elements\" fill=\"none\" "
-	    "stroke=\"#000000\" stroke-width=\"%s\" "
-	    "stroke-linejoin=\"round\" clip-path=\"url(#map)\">\n", num);
-	ly.head = head;
-	ly.attrs = "";
+	strokelayer(&ly, head, "elements", clamp(f / 8, 0.01, 1),
+	    "stroke-linejoin=\"round\"");
 	for (i = 0; i < pic.nelems; i++, e += 1 + e[0]) {
 		if (!elembox(e, b, c))
 			continue;
@@ -910,16 +921,12 @@ static void
 vertices(double f)
 {
 	struct layer ly = { 0 };
-	char head[256], num[32];
+	char head[256];
 	long long x, y;
 	size_t i;
 
-	fmthund(num, hund(clamp(f / 5, 0.5, 5)));
-	snprintf(head, sizeof(head), "<g id=\"vertices\" fill=\"none\" "
-	    "stroke=\"#000000\" stroke-width=\"%s\" "
-	    "stroke-linecap=\"round\" clip-path=\"url(#map)\">\n", num);
-	ly.head = head;
-	ly.attrs = "";
+	strokelayer(&ly, head, "vertices", clamp(f / 5, 0.5, 5),
+	    "stroke-linecap=\"round\"");
 	for (i = 0; i < pic.nverts; i++) {
 		vertexpx(i + 1, &x, &y);
 		if (outcode(x, y) != 0)
