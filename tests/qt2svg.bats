@@ -12,6 +12,7 @@ load test_helper
 
 F='#0072B2'
 E='#56B4E9'
+P='#E69F00'
 WHITE='#FFFFFF'
 
 need() {
@@ -92,13 +93,15 @@ mesh() {
 
 @test "a bad option prints the usage and exits 2" {
 	run -2 --separate-stderr qt2svg -x
-	[[ "$stderr" == *"usage: qt2svg [-nNv] [-c classes] [-m margin] [-w width] [file]" ]]
+	[[ "$stderr" == *"usage: qt2svg [-nNv] [-b x0,y0,x1,y1] [-c classes] [-m margin] [-w width] [file]" ]]
 	run -2 --separate-stderr qt2svg a b
 	[[ "$stderr" == *usage:* ]]
 }
 
-@test "-c takes only F, E and P; -w and -m take whole pixels that leave room" {
-	for bad in '-c Q' '-c FX' '-w 0' '-w 12.5' '-w x' '-m -1' '-w 100 -m 50'; do
+@test "-c takes only F, E and P; -w and -m take whole pixels that leave room; -b a window" {
+	for bad in '-c Q' '-c FX' '-w 0' '-w 12.5' '-w x' '-m -1' '-w 100 -m 50' \
+	    '-b 0,0,1' '-b 0,0,1,1,' '-b 0,0,1,x' '-b 0;0;1;1' '-b 1,0,0,1' \
+	    '-b 0,1,1,1' '-b 0,0,1e200,1'; do
 		run -2 --separate-stderr qt2svg $bad /dev/null
 		[[ "$stderr" == qt2svg:* ]]
 		[ -z "$output" ]
@@ -206,6 +209,126 @@ mesh() {
 	[ "$output" = "$WHITE" ]
 	run -0 pixel holed.png 130 50
 	[ "$output" = "$WHITE" ]
+}
+
+# The pixels of the holed square, a quarter of the universe 0 0 8, when it
+# fills the map at -w 180, 40 pixels per unit: world (x, y) is pixel
+# (10 + 40x, 10 + 40(4 - y)).  Drawn in the whole universe instead, each of
+# these pixels would be empty.
+quarter() {
+	run -0 pixel "$1" 30 30	# F cell 0 3, world 0.5 3.5
+	[ "$output" = "$F" ]
+	run -0 pixel "$1" 150 150	# F cell 3 0
+	[ "$output" = "$F" ]
+	run -0 pixel "$1" 150 30	# F cell 3 3
+	[ "$output" = "$F" ]
+	run -0 pixel "$1" 70 70	# the hole, cell 1 2
+	[ "$output" != "$F" ]
+}
+
+@test "a subtree drawn alone fills the picture: qtsplit -r 0 shows that quadrant" {
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n1 3\n3 3\n3 1\n' > holed.xy
+	polyread -u 0,0,8 -l 3 holed.xy | qtsplit -r 0 | qt2svg -w 180 > sub.svg
+	render sub.svg sub.png
+	quarter sub.png
+	grep -q '>level 3, window 0,0,4,4<' sub.svg
+	run -0 pixel sub.png 70 70
+	[ "$output" = "$E" ]
+	# its leaves alone, without the nodes: the smallest cell holding them
+	polyread -u 0,0,8 -l 3 holed.xy | qtsplit -r 0 | qtleaves |
+	    qt2svg -w 180 > leaves.svg
+	render leaves.svg leaves.png
+	quarter leaves.png
+	# the whole tree still shows the universe
+	holed
+	qt2svg -w 180 holed.qt > whole.svg
+	render whole.svg whole.png
+	run -0 pixel whole.png 30 30
+	[ "$output" = "$E" ]
+}
+
+@test "-b draws a window: the cells in it fill the width, the others are left out" {
+	holed
+	qt2svg -w 180 -b 0,0,4,4 holed.qt > b.svg
+	render b.svg b.png
+	quarter b.png
+	run -0 pixel b.png 70 70
+	[ "$output" = "$E" ]
+	# the 12 F cells and the 4 in the hole; the three E quadrants only
+	# touch the window
+	grep -q '>F full 12<' b.svg
+	grep -q '>E empty 4<' b.svg
+	# a window twice as wide as high: 20 pixels per unit, the map 160 x 80
+	qt2svg -w 180 -b 0,0,8,4 holed.qt > wide.svg
+	render wide.svg wide.png
+	run -0 pixel wide.png 20 80	# world 0.5 0.5, F
+	[ "$output" = "$F" ]
+	run -0 pixel wide.png 130 50	# world 6 2, E
+	[ "$output" = "$E" ]
+	run -0 pixel wide.png 90 95	# below the map: the margin
+	[ "$output" = "$WHITE" ]
+	# a cell across the window's edge is cut at it: at -b 0,0,6,3, 80/3
+	# pixels per unit, the E quadrant 4..8 x 0..4 spans pixels 116.67 to
+	# 170 across (x 4 to 6) and 10 to 90 down (y 3 to 0)
+	qt2svg -w 180 -b 0,0,6,3 holed.qt | group leaves-E - > cut
+	grep -q '^<path d="M116.67 10h53.33v80h-53.33z"/>$' cut
+}
+
+@test "the legend gives a scale bar, the tree's level and the window" {
+	holed
+	# -w 180: 20 pixels per unit; a quarter of the map's 160 pixels is 2
+	# units, 40 pixels; the legend's five rows end at 10 + 160 + 10 +
+	# 5 * 16, the bar's row starts 2 pixels lower
+	qt2svg -w 180 holed.qt > h.svg
+	cat > want <<-'EOF'
+	<path d="M10 268h40M10 262v12M50 262v12" fill="none" stroke="#000000" stroke-width="1.5"/>
+	<text x="56" y="272.5">2 units</text>
+	<text x="10" y="288.5">level 3, window 0,0,8,8</text>
+	EOF
+	group legend h.svg | tail -n 3 > got
+	diff -u want got
+	grep -q '<desc>universe 0 0 8, window 0,0,8,8, drawn by qt2svg</desc>' h.svg
+	# a window of 3 units at 160 pixels: 0.5 units is 26.67 pixels
+	qt2svg -w 180 -b 1,1,4,2.5 holed.qt > b.svg
+	group legend b.svg | tail -n 3 > got
+	grep -q '^<path d="M10 [0-9.]*h26.67M' got
+	grep -q '>0.5 units<' got
+	grep -q '>level 3, window 1,1,4,2.5<' got
+}
+
+@test "numbers at the picture's edges are moved inside it" {
+	mesh
+	# -m 0: vertices 3, 6 and 9 lie on the right edge, x 200, and 7, 8
+	# and 9 on the top one; each number's text, 0.6 of its font size wide
+	# a digit and rising 0.75 of it, stays in the 200 pixels across and
+	# below y 0
+	qt2svg -w 200 -m 0 -nN mesh.qt > m.svg
+	fs=$(grep -o '<g id="vertex-numbers" [^>]*font-size="[0-9.]*"' m.svg |
+	    sed 's/.*font-size="//; s/"//')
+	[ "$fs" = 10 ]
+	group vertex-numbers m.svg | awk -F '"' -v fs="$fs" '
+	    { id = $0; sub(/<\/text>$/, "", id); sub(/.*>/, "", id)
+	      if ($2 + 0.6 * fs * length(id) > 200 || $4 - 0.75 * fs < 0)
+		print "out:", $0 }' > out
+	[ ! -s out ]
+	[ "$(group vertex-numbers m.svg | wc -l)" -eq 9 ]
+	group element-numbers m.svg | awk -F '"' '
+	    { if ($2 < 0 || $2 > 200 || $4 < 0 || $4 > 200) print "out:", $0 }' > out
+	[ ! -s out ]
+}
+
+@test "rings are cut at the window: vertices far outside it are left out" {
+	polyread "$SAMPLES/amoeba.brep" > rings.qt
+	# the amoeba's outer ring has 40 vertices, 41 with the first again
+	qt2svg rings.qt | group outer-rings - |
+	    grep -oE -- '-?[0-9.]+ -?[0-9.]+' | wc -l > all
+	[ "$(cat all)" -eq 41 ]
+	qt2svg -b 4,4,8,8 rings.qt | group outer-rings - |
+	    grep -oE -- '-?[0-9.]+ -?[0-9.]+' | wc -l > window
+	[ "$(cat window)" -lt 20 ]
+	[ "$(cat window)" -gt 0 ]
+	qt2svg -b 4,4,8,8 rings.qt |
+	    grep -q '^<g id="outer-rings" .*clip-path="url(#map)">$'
 }
 
 @test "the y axis points up: a region in the upper half fills the upper half" {
@@ -353,15 +476,83 @@ mesh() {
 	[[ "$stderr" == *'no universe record'* ]]
 }
 
-@test "a million cells make a file that xmllint and rsvg-convert read" {
+@test "a million cells of 2 pixels make a file that xmllint and rsvg-convert read" {
 	need xmllint libxml2-utils
-	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 10 -m 10 | qt2svg > big.svg
+	# -w 2068: the map is 2048 pixels, a cell at level 10 is 2, its own
+	# square
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 10 -m 10 |
+	    qt2svg -w 2068 > big.svg
 	[ "$(squares big.svg | awk '{ n += $2 } END { print n }')" -eq 1048576 ]
 	[ "$(wc -c < big.svg)" -gt 10000000 ]
 	run -0 xmllint --noout big.svg
 	[ -z "$output" ]
 	need rsvg-convert librsvg2-bin
 	run -0 rsvg-convert -o big.png big.svg
+}
+
+@test "cells under 2 pixels are merged: the file is bounded by the picture" {
+	# at the default width a level-8 cell is 3 pixels, a level-9 one 1.5:
+	# each level-9 cell is a block, and deeper cells fall in blocks
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 9 a.qt | qt2svg > nine.svg
+	qtsplit -l 14 a.qt | qt2svg > fourteen.svg
+	# 32 times the partial leaves of level 9 (about 4^5 as many leaves)
+	# in no more than 1.3 times the bytes
+	[ "$(qtsplit -l 14 a.qt | grep -c ' P$')" -gt 80000 ]
+	n9=$(wc -c < nine.svg)
+	n14=$(wc -c < fourteen.svg)
+	[ "$n14" -le $((n9 * 13 / 10)) ]
+	# and no more rectangles than the map has blocks, 512 x 512
+	[ "$(squares fourteen.svg | awk '{ n += $2 } END { print n }')" -le 262144 ]
+}
+
+@test "outlines are drawn per level: a large cell keeps its outline beside tiny ones" {
+	# universe 0 0 4 at -w 100: 20 pixels per unit; the level-1 squares
+	# are 40 pixels, outlined; the level-7 leaf under quadrant 3 is 0.6
+	# pixels, merged into its level-6 block (1.25 pixels) at world (2, 2),
+	# pixel 50 50 its lower left corner; the next block to the right
+	# holds a full and an empty leaf, and so the boundary: partial too
+	cat > graded.qt <<-'EOF'
+	qtree 1
+	universe 0 0 4
+	leaf 0 1 0 0 0 0 2 F
+	leaf 1 1 1 0 2 0 2 F
+	leaf 2 1 0 1 0 2 2 E
+	leaf 3000000 7 64 64 2 2 0.03125 P
+	leaf 3000010 7 66 64 2.0625 2 0.03125 F
+	leaf 3000011 7 67 64 2.09375 2 0.03125 E
+	end 7
+	EOF
+	qt2svg -w 100 graded.qt > graded.svg
+	render graded.svg graded.png
+	# inside the full square 0: its colour; on the side it shares with
+	# square 1, at x 50: darker, the outline
+	run -0 pixel graded.png 30 70
+	[ "$output" = "$F" ]
+	run -0 pixel graded.png 50 70
+	[ "$output" != "$F" ]
+	run -0 pixel graded.png 49 70
+	[ "$output" != "$F" ]
+	# the partial blocks, with no outline
+	run -0 pixel graded.png 50 49
+	[ "$output" = "$P" ]
+	run -0 pixel graded.png 51 49
+	[ "$output" = "$P" ]
+}
+
+@test "a level-14 lake shows its partial band: orange pixels along the shore" {
+	need_shared
+	need rsvg-convert librsvg2-bin
+	need ppmhist netpbm
+	polyread "$SHARED/lakes/lake_victoria_ne10m.xy" | qtsplit -l 14 |
+	    qt2svg > v.svg
+	# 214491 partial leaves of about 0.05 pixels, in a band of blocks
+	# 1.5 pixels wide, most of it under the shore line
+	grep -q '>P partial 214491<' v.svg
+	render v.svg v.png
+	pngtopnm v.png | ppmhist -noheader |
+	    awk '$1 == 230 && $2 == 159 && $3 == 0 { n = $5 } END { print n + 0 }' > n
+	[ "$(cat n)" -ge 1000 ]
 }
 
 @test "the man page's example counts the leaves drawn" {

@@ -4,8 +4,8 @@
 # shards of it against cat | wc -l, qtmesh on a balanced level-16 tree
 # (elements/s in the cells_per_s column) and qtbalance on the level-16
 # amoeba (leaves/s and peak RSS a leaf), print a table and the targets of
-# issue 3 (and 17's of qtcat, 10's of qtmesh and qtbalance) with their
-# figures, and draw samples/bench.svg.
+# issue 3 (and 17's of qtcat, 10's of qtmesh and qtbalance, 16's of
+# qt2svg) with their figures, and draw samples/bench.svg.
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
@@ -29,6 +29,11 @@
 # Level 24, for the memory target alone, is run below one level-8 cell the
 # outline crosses (qtsplit -r): the same work per cell and the same depth
 # as the whole tree, without its 4 x 10^8 cells.
+#
+# qt2svg on a real lake (issue 16), not timed: the size of its picture of
+# Lake Saimaa at level 16, counted through a pipe, and its peak RSS there
+# and at level 18 (1.7 x 10^7 leaves), from ../shared/data (BENCH_SHARED);
+# skipped, and said so, when that is absent.
 #
 # Environment: BENCH_RUNS (runs per figure under 1 s, default 5; slower
 # figures take 3), BENCH_MAXLEVEL (default 20), BENCH_MAXN (largest star,
@@ -346,6 +351,42 @@ if [ -n "$big" ]; then
 	rm -f "$tmp/big.qt"
 fi
 
+# svglake LEVEL: qt2svg on Lake Saimaa's tree at LEVEL, its input and its
+# output pipes; sets size (bytes of SVG), svgmem (qt2svg's peak RSS, KB)
+# and leaves (the legend's sum).
+svglake() {
+	size=$(./qtsplit -l "$1" "$tmp/saimaa.qt" | peak ./qt2svg |
+	    tee "$tmp/lake.svg" | wc -c)
+	svgmem=$(rss)
+	tail -n 1 "$tmp/lake.svg" | grep -q '^</svg>$' ||
+		die "qt2svg failed on Lake Saimaa level $1"
+	leaves=$(sed -n 's/.*>[FEP] [a-z]* \([0-9]*\)<.*/\1/p' "$tmp/lake.svg" |
+	    awk '{ n += $1 } END { print n + 0 }')
+}
+
+lake=${BENCH_SHARED:-../shared/data}/lakes/lake_saimaa_ne10m.xy
+: >"$tmp/svglake"
+if [ -f "$lake" ] && [ -x ./qt2svg ]; then
+	./polyread "$lake" >"$tmp/saimaa.qt" || die "polyread rejects $lake"
+	svglake 16
+	rendered=-
+	if command -v rsvg-convert >/dev/null 2>&1; then
+		rsvg-convert -o "$tmp/lake.png" "$tmp/lake.svg" &&
+		    rendered=yes || rendered=no
+	fi
+	echo "# qt2svg: Lake Saimaa level 16, $leaves leaves:" \
+	    "$size bytes of SVG, peak RSS $svgmem KB, rsvg-convert: $rendered"
+	echo "16 $size $svgmem $rendered $leaves" >>"$tmp/svglake"
+	svglake 18
+	echo "# qt2svg: Lake Saimaa level 18, $leaves leaves:" \
+	    "$size bytes of SVG, peak RSS $svgmem KB"
+	echo "18 $size $svgmem - $leaves" >>"$tmp/svglake"
+	rm -f "$tmp/saimaa.qt" "$tmp/lake.svg" "$tmp/lake.png"
+else
+	echo "# qt2svg on Lake Saimaa: $lake is absent, skipped"
+fi
+
+
 # qtmesh on a balanced level-16 tree: uniform at level 15 with its partial
 # cells split once more, below the level-5 cell of the amoeba's tenth
 # partial leaf (qtsplit -r), about 10^6 elements; until qtbalance exists,
@@ -508,6 +549,37 @@ if [ -s "$tmp/balance" ]; then
 	    "$perleaf B/leaf" \
 	    "$(awk -v b="$perleaf" 'BEGIN {
 		print (b < 0 ? "SKIP" : b <= 64 ? "PASS" : "FAIL") }')"
+fi
+
+if [ -s "$tmp/svglake" ]; then
+	awk '
+	function verdict(name, fig, ok) {
+		printf "%-58s %-22s %s\n", name, fig, ok
+	}
+	$1 == 16 {
+		verdict("qt2svg: Saimaa level 16, SVG < 5 MB",
+		    sprintf("%.2f MB", $2 / 1e6), $2 < 5e6 ? "PASS" : "FAIL")
+		if ($3 == "-")
+			verdict("qt2svg: Saimaa level 16, RSS < 100 MB",
+			    "not measured", "SKIP")
+		else
+			verdict("qt2svg: Saimaa level 16, RSS < 100 MB",
+			    sprintf("%d KB", $3), $3 < 102400 ? "PASS" : "FAIL")
+		if ($4 == "-")
+			verdict("qt2svg: Saimaa level 16, rsvg-convert renders it",
+			    "not measured", "SKIP")
+		else
+			verdict("qt2svg: Saimaa level 16, rsvg-convert renders it",
+			    $4, $4 == "yes" ? "PASS" : "FAIL")
+	}
+	$1 == 18 {
+		name = sprintf("qt2svg: %.2g leaves, RSS < 100 MB", $5)
+		if ($3 == "-")
+			verdict(name, "not measured", "SKIP")
+		else
+			verdict(name, sprintf("%d KB", $3),
+			    $5 >= 1e7 && $3 < 102400 ? "PASS" : "FAIL")
+	}' "$tmp/svglake"
 fi
 
 if [ -n "$svg" ]; then

@@ -1,17 +1,20 @@
 /*
  * qt2svg: draw a qtree(5) stream as one standalone SVG 1.1 picture.
  *
- * The universe fills the width less the margins, y pointing up as in the
- * world.  Leaves are filled by class, every class in few path elements of
- * many square subpaths, so that a million cells stay a file a renderer can
- * take.  The mesh's elements, the rings, the mesh's vertices and the
- * numbers go on top in that order, and a legend below the map.  Nothing is
- * written before the end record: the picture is held in memory, as text
- * about the size of the output, so an invalid stream gives no half-written
- * file.  Coordinates are whole
- * hundredths of a pixel, computed from the cell corners that qtree(5)
- * defines, so neighbouring squares share their edges exactly and the same
- * input always gives the same bytes.
+ * The window fills the width less the margins, y pointing up as in the
+ * world.  The picture bounds the file and the memory, not the tree: a
+ * leaf of 2 pixels or more is drawn as its own square, outlined; smaller
+ * leaves are merged into the blocks of a grid of cells 1 to 2 pixels wide,
+ * a byte of class bits a block, written as runs along its rows.  Leaves
+ * are filled by class, in few path elements of many subpaths.  The mesh's
+ * elements, the rings, the mesh's vertices and the numbers go on top in
+ * that order, and a legend below the map.  Nothing is written before the
+ * end record: what is to be drawn is kept in world terms (squares by cell,
+ * the grid, the rings, the mesh) and drawn at the end, so an invalid
+ * stream gives no half-written file.  Coordinates are whole hundredths of
+ * a pixel, computed from the cell corners that qtree(5) defines, so
+ * neighbouring squares share their edges exactly and the same input
+ * always gives the same bytes.
  */
 #include <errno.h>
 #include <math.h>
@@ -30,6 +33,8 @@
 #define CHUNK	1000
 #define RINGCHUNK 2000	/* ring vertices per path element */
 #define ROW	16		/* legend row height, pixels */
+#define NOGRID	(QT_MAXLEVEL + 1)	/* the grid's level when there is none */
+#define CLIPPAD	300		/* hundredths: the rings' strokes and dots */
 
 enum { CF, CE, CP, NCLASS };
 
@@ -42,92 +47,90 @@ static const char *classcolour[NCLASS] = { "#0072B2", "#56B4E9", "#E69F00" };
 static const char ringstyle[] = "stroke=\"#000000\" stroke-width=\"1.5\"";
 static const char holestyle[] = "stroke-dasharray=\"5 3\"";
 
-struct buf {
-	char	*p;
-	size_t	 len, cap;
-};
-
-struct vertex {
-	long long	 x, y;		/* hundredths of a pixel */
-};
-
 /* What the options ask for. */
 static struct options {
 	int	width, margin;	/* pixels */
 	int	drawn[NCLASS];	/* the leaf classes -c draws */
 	int	nflag, Nflag;	/* element numbers, vertex numbers */
+	int	bflag;		/* -b: a window */
+	double	bx0, by0, bx1, by1;
 } opt = { .width = 800, .margin = 10 };
 
-/* The leaves, by class, and their element numbers. */
-struct leaflayer {
-	struct buf	 path[NCLASS];
-	unsigned long long n[NCLASS];
-	int		 deepest;	/* the smallest leaf's level */
-	struct buf	 labels;
-	unsigned long long nlabels;
+/* A leaf of 2 pixels or more, drawn as its own square. */
+struct square {
+	uint64_t	 ix, iy;
+	unsigned long long id;
+	unsigned char	 level, k;	/* k: the class's index */
 };
 
 /*
- * Outer rings [0] and holes [1].  The ring being drawn goes on, when its
- * path element is full, from its last vertex in the next one.
+ * What the picture shows: a tree cell's square (d >= 0) or -b's rectangle
+ * (d < 0), and the grid of the cells of level lb that it meets, the
+ * shallowest level whose cells are under 2 pixels.  The grid's rows are
+ * made when a leaf first falls in them.
  */
-struct ringlayer {
-	struct buf	 path[2];
-	long		 n[2];
-	size_t		 pathverts[2];	/* in the last path element */
-	int		 kind;		/* of the ring being drawn */
-	long long	 lastx, lasty;
+struct window {
+	int		 set;
+	int		 d;		/* the cell's level */
+	uint64_t	 cx, cy;
+	double		 x0, y0, x1, y1;	/* world */
+	double		 w, h;
+	double		 scale;		/* pixels per world unit */
+	long long	 maph;		/* the map's height, whole pixels */
+	int		 lb;		/* the grid's level, NOGRID for none */
+	uint64_t	 gx, gy;	/* its first column and row */
+	size_t		 gw, gh;
+	unsigned char	**rows;		/* CLASSBIT bits a block */
 };
 
-/* The mesh: the vertices as dots, the elements as outlines, numbers. */
-struct meshlayer {
-	struct vertex	*verts;
-	size_t		 nverts, vertcap;
-	struct buf	 dots, vertlabels;
-	size_t		 nelems;
-	struct buf	 path, elemlabels;
+struct ringrec {
+	size_t	first, n;	/* in the vertex array */
+	int	hole;
 };
 
-/* The world as the picture places it, and what is drawn on it. */
+/* The stream, as much of it as the picture needs. */
 static struct picture {
 	struct universe	 u;
-	double		 scale;		/* pixels per world unit */
-	double		 finest;	/* smallest side drawn, pixels */
-	struct leaflayer leaves;
-	struct ringlayer rings;
-	struct meshlayer mesh;
-} pic = { .finest = -1, .leaves.deepest = -1 };
+	int		 level;		/* the level record's, -1 for none */
+	struct window	 win;
+	struct square	*sq;
+	size_t		 nsq, sqcap;
+	unsigned long long n[NCLASS];	/* leaves drawn, per class */
+	int		 deepest;	/* the smallest leaf's level */
+	int		 numbered;	/* a leaf drawn has an element number */
+	struct point	*rv;		/* the rings' vertices */
+	size_t		 nrv, rvcap;
+	struct ringrec	*rings;
+	size_t		 nrings, ringcap;
+	long		 nring[2];	/* outer rings, holes */
+	struct point	*verts;		/* the mesh's vertices */
+	size_t		 nverts, vertcap;
+	unsigned long long *elems;	/* each: n, then n vertex ids */
+	size_t		 nelemw, elemcap, nelems;
+} pic = { .level = -1, .deepest = -1 };
+
+/* The map's edges in hundredths of a pixel, left, top, right, bottom. */
+static long long box[4];
 
 static void
 usage(void)
 {
-	fprintf(stderr, "usage: qt2svg [-nNv] [-c classes] [-m margin] "
-	    "[-w width] [file]\n");
+	fprintf(stderr, "usage: qt2svg [-nNv] [-b x0,y0,x1,y1] [-c classes] "
+	    "[-m margin] [-w width] [file]\n");
 	exit(2);
 }
 
-/* Room for n more bytes at the end of b, for formatting in place. */
-static char *
-room(struct buf *b, size_t n)
+/* Room for n items of size in *p, which holds *cap. */
+static void *
+grow(void *p, size_t *cap, size_t n, size_t size)
 {
-	if (b->len + n > b->cap) {
-		b->cap = b->cap + n > 2 * b->cap ? b->cap + n : 2 * b->cap;
-		b->p = xreallocarray(b->p, b->cap, 1);
-	}
-	return b->p + b->len;
-}
-
-static void
-put(struct buf *b, const char *s, size_t n)
-{
-	memcpy(room(b, n), s, n);
-	b->len += n;
-}
-
-static void
-putstr(struct buf *b, const char *s)
-{
-	put(b, s, strlen(s));
+	if (n <= *cap)
+		return p;
+	if (*cap == 0)
+		*cap = 256;
+	while (*cap < n)
+		*cap *= 2;
+	return xreallocarray(p, *cap, size);
 }
 
 /* Hundredths as a decimal without trailing zeros: 1250 is "12.5". */
@@ -191,24 +194,37 @@ putnum(char *p, struct numtext *t, long long v)
 	return p + t->len;
 }
 
+
 static void
-puthund(struct buf *b, long long v)
+out(const char *s, size_t n)
+{
+	if (n > 0 && fwrite(s, 1, n, stdout) != n)
+		die(1, "write error: %s", strerror(errno ? errno : EIO));
+}
+
+static void
+outs(const char *s)
+{
+	out(s, strlen(s));
+}
+
+static void
+outhund(long long v)
 {
 	char tmp[32];
 
-	put(b, tmp, fmthund(tmp, v) - tmp);
+	out(tmp, fmthund(tmp, v) - tmp);
 }
 
 /* A pair "X Y" in hundredths. */
 static void
-putxy(struct buf *b, long long x, long long y)
+outxy(long long x, long long y)
 {
-	puthund(b, x);
-	put(b, " ", 1);
-	puthund(b, y);
+	outhund(x);
+	out(" ", 1);
+	outhund(y);
 }
 
-/* Far outside any picture, but an integer still. */
 static long long
 hund(double px)
 {
@@ -230,253 +246,25 @@ hund(double px)
 	return r;
 }
 
+
 static long long
 pixelx(double x)
 {
-	return hund(opt.margin + (x - pic.u.x0) * pic.scale);
+	return hund(opt.margin + (x - pic.win.x0) * pic.win.scale);
 }
 
 /* The world's y grows upward, the picture's downward. */
 static long long
 pixely(double y)
 {
-	return hund(opt.margin + (pic.u.size - (y - pic.u.y0)) * pic.scale);
+	return hund(opt.margin + (pic.win.h - (y - pic.win.y0)) *
+	    pic.win.scale);
 }
 
-static void
-seefeature(double px)
+static long long
+clampll(long long v, long long lo, long long hi)
 {
-	if (pic.finest < 0 || px < pic.finest)
-		pic.finest = px;
-}
-
-static int
-classindex(char class)
-{
-	return class == 'F' ? CF : class == 'E' ? CE : CP;
-}
-
-static void
-label(struct buf *b, long long x, long long y, double size, long long id)
-{
-	char num[24];
-	double fs;
-	int digits = fmtint(num, id) - num;
-
-	/* Wide enough for the digits, never larger than the legend's text. */
-	fs = size * 1.4 / (digits > 2 ? digits : 2);
-	if (fs > 12)
-		fs = 12;
-	if (fs < 0.01)
-		fs = 0.01;
-	/* The digits' middle, not their baseline, on the point. */
-	putstr(b, "<text x=\"");
-	puthund(b, x);
-	putstr(b, "\" y=\"");
-	puthund(b, y + hund(0.35 * fs));
-	putstr(b, "\" font-size=\"");
-	puthund(b, hund(fs));
-	putstr(b, "\">");
-	putstr(b, num);
-	putstr(b, "</text>\n");
-}
-
-static void
-leaf(const struct cell *c)
-{
-	struct leaflayer *l = &pic.leaves;
-	struct leveltexts *t = &kept[c->level];
-	int k = classindex(c->class);
-	long long x0, x1, y0, y1;
-	struct buf *b = &l->path[k];
-	char *p;
-
-	if (!opt.drawn[k])
-		return;
-	x0 = pixelx(c->x);
-	x1 = pixelx(pic.u.x0 + (double)(c->ix + 1) * c->size);
-	y0 = pixely(c->y);
-	y1 = pixely(pic.u.y0 + (double)(c->iy + 1) * c->size);
-	if (l->n[k] > 0 && l->n[k] % CHUNK == 0)
-		putstr(b, "\"/>\n<path d=\"");
-	/* five numbers, each copied as a whole text, five letters, a space */
-	p = room(b, 5 * sizeof(struct numtext) + 6);
-	*p++ = 'M';
-	p = putnum(p, &t->x[c->ix % NKEPT], x0);
-	*p++ = ' ';
-	p = putnum(p, &t->y[c->iy % NKEPT], y1);
-	*p++ = 'h';
-	p = putnum(p, &t->side[0][(x1 - x0) & 1], x1 - x0);
-	*p++ = 'v';
-	p = putnum(p, &t->side[1][(y0 - y1) & 1], y0 - y1);
-	*p++ = 'h';
-	p = putnum(p, &t->side[2][(x0 - x1) & 1], x0 - x1);
-	*p++ = 'z';
-	b->len = p - b->p;
-	l->n[k]++;
-	if (c->level > l->deepest)
-		l->deepest = c->level;
-	if (opt.nflag && c->id > 0) {
-		label(&l->labels, (x0 + x1) / 2, (y0 + y1) / 2,
-		    (x1 - x0) / 100.0, c->id);
-		l->nlabels++;
-	}
-}
-
-/*
- * A ring is an open polyline back to its first vertex, so that a long one
- * can go on in the next path element from where the last one stopped.
- */
-static void
-ringto(long long x, long long y)
-{
-	struct ringlayer *rl = &pic.rings;
-	struct buf *b = &rl->path[rl->kind];
-	size_t *n = &rl->pathverts[rl->kind];
-
-	if (*n >= RINGCHUNK) {
-		putstr(b, "\"/>\n<path d=\"M");
-		putxy(b, rl->lastx, rl->lasty);
-		*n = 1;
-	}
-	put(b, " ", 1);
-	putxy(b, x, y);
-	(*n)++;
-	rl->lastx = x;
-	rl->lasty = y;
-}
-
-static void
-ring(const struct ring *g)
-{
-	struct ringlayer *rl = &pic.rings;
-	struct buf *b = &rl->path[g->hole];
-	size_t *n = &rl->pathverts[g->hole], i;
-	long long x = pixelx(g->v[0].x), y = pixely(g->v[0].y);
-
-	rl->kind = g->hole;
-	rl->n[rl->kind]++;
-	if (*n >= RINGCHUNK) {
-		putstr(b, "\"/>\n<path d=\"");
-		*n = 0;
-	}
-	put(b, "M", 1);
-	putxy(b, x, y);
-	(*n)++;
-	rl->lastx = x;
-	rl->lasty = y;
-	for (i = 1; i < g->n; i++)
-		ringto(pixelx(g->v[i].x), pixely(g->v[i].y));
-	ringto(x, y);
-}
-
-static void
-meshvertex(const struct meshvertex *mv)
-{
-	struct meshlayer *m = &pic.mesh;
-	struct vertex *v;
-	char num[24];
-
-	if (m->nverts == m->vertcap) {
-		m->vertcap = m->vertcap ? 2 * m->vertcap : 256;
-		m->verts = xreallocarray(m->verts, m->vertcap,
-		    sizeof(*m->verts));
-	}
-	v = &m->verts[m->nverts++];
-	v->x = pixelx(mv->p.x);
-	v->y = pixely(mv->p.y);
-	if (m->nverts > 1 && (m->nverts - 1) % CHUNK == 0)
-		putstr(&m->dots, "\"/>\n<path d=\"");
-	put(&m->dots, "M", 1);
-	putxy(&m->dots, v->x, v->y);
-	put(&m->dots, "h0", 2);
-	if (opt.Nflag) {
-		/* Above and to the right of the dot, clear of its lines. */
-		putstr(&m->vertlabels, "<text x=\"");
-		puthund(&m->vertlabels, v->x + 150);
-		putstr(&m->vertlabels, "\" y=\"");
-		puthund(&m->vertlabels, v->y - 150);
-		putstr(&m->vertlabels, "\">");
-		putstr(&m->vertlabels, (fmtint(num, mv->id), num));
-		putstr(&m->vertlabels, "</text>\n");
-	}
-}
-
-/* Elements use only vertices defined before them: drawn as they come. */
-static void
-meshelem(const struct meshelem *e)
-{
-	struct meshlayer *m = &pic.mesh;
-	struct buf *path = &m->path;
-	long long xmin = 0, xmax = 0, ymin = 0, ymax = 0;
-	long long sx = 0, sy = 0;
-	size_t k;
-
-	if (m->nelems > 0 && m->nelems % CHUNK == 0)
-		putstr(path, "\"/>\n<path d=\"");
-	m->nelems++;
-	for (k = 0; k < e->n; k++) {
-		const struct vertex *v = &m->verts[e->v[k] - 1];
-
-		put(path, k == 0 ? "M" : " ", 1);
-		putxy(path, v->x, v->y);
-		if (k == 0 || v->x < xmin)
-			xmin = v->x;
-		if (k == 0 || v->x > xmax)
-			xmax = v->x;
-		if (k == 0 || v->y < ymin)
-			ymin = v->y;
-		if (k == 0 || v->y > ymax)
-			ymax = v->y;
-		sx += v->x;
-		sy += v->y;
-	}
-	put(path, "z", 1);
-	seefeature((xmax - xmin < ymax - ymin ? xmax - xmin : ymax - ymin) /
-	    100.0);
-	if (opt.nflag)
-		label(&m->elemlabels, sx / (long long)e->n,
-		    sy / (long long)e->n, (xmax - xmin) / 100.0, e->id);
-}
-
-static void
-out(const char *s, size_t n)
-{
-	if (n > 0 && fwrite(s, 1, n, stdout) != n)
-		die(1, "write error: %s", strerror(errno ? errno : EIO));
-}
-
-static void
-outs(const char *s)
-{
-	out(s, strlen(s));
-}
-
-static void
-outbuf(const struct buf *b)
-{
-	out(b->p, b->len);
-}
-
-static void
-outhund(long long v)
-{
-	char tmp[32];
-
-	fmthund(tmp, v);
-	outs(tmp);
-}
-
-/* A group of path elements whose data is b, split already at chunks. */
-static void
-outpaths(const char *head, const struct buf *b)
-{
-	if (b->len == 0)
-		return;
-	outs(head);
-	outs("<path d=\"");
-	outbuf(b);
-	outs("\"/>\n</g>\n");
+	return v < lo ? lo : v > hi ? hi : v;
 }
 
 static double
@@ -485,11 +273,760 @@ clamp(double v, double lo, double hi)
 	return v < lo ? lo : v > hi ? hi : v;
 }
 
+static int
+classindex(char class)
+{
+	return class == 'F' ? CF : class == 'E' ? CE : CP;
+}
+
+/*
+ * A block's class from the classes of the leaves in it.  A block that
+ * holds a partial leaf is partial; so is one that holds both full and
+ * empty leaves, since the boundary between them crosses its interior,
+ * which is what partial means for a cell (qtree(5)).  When -c leaves out
+ * P, such a block is drawn full.  -1: no leaf drawn.
+ */
+static int
+blockclass(unsigned bits)
+{
+	if (bits == 0)
+		return -1;
+	if ((bits & CLASSBIT('P')) ||
+	    (bits & CLASSBIT('F') && bits & CLASSBIT('E')))
+		return opt.drawn[CP] ? CP : CF;
+	return bits & CLASSBIT('F') ? CF : CE;
+}
+
+static int
+mapside(void)
+{
+	return opt.width - 2 * opt.margin;
+}
+
+/* The side of a cell of this level, in pixels. */
+static double
+cellpixels(int level)
+{
+	return ldexp(pic.u.size, -level) * pic.win.scale;
+}
+
+/*
+ * The cells of side hb that the world's span [a, a + len] meets, a from
+ * the universe's corner, n in all, and one more on either side against
+ * rounding: the first and how many.
+ */
+static void
+span(double a, double len, double hb, double n, uint64_t *first,
+    size_t *count)
+{
+	double lo = floor(a / hb) - 1, hi = ceil((a + len) / hb) + 1;
+
+	lo = clamp(lo, 0, n);
+	hi = clamp(hi, lo, n);
+	*first = (uint64_t)lo;
+	*count = (size_t)(hi - lo);
+}
+
+/* The grid: its level and extent, no rows yet. */
+static void
+grid(struct window *w)
+{
+	int k, l;
+
+	w->lb = NOGRID;
+	w->gx = w->gy = 0;
+	w->gw = w->gh = 0;
+	w->rows = NULL;
+	if (w->d < 0) {
+		for (l = 0; l <= QT_MAXLEVEL && cellpixels(l) >= 2; l++)
+			;
+		if (l > QT_MAXLEVEL)
+			return;
+		w->lb = l;
+		span(w->x0 - pic.u.x0, w->w, ldexp(pic.u.size, -l),
+		    ldexp(1, l), &w->gx, &w->gw);
+		span(w->y0 - pic.u.y0, w->h, ldexp(pic.u.size, -l),
+		    ldexp(1, l), &w->gy, &w->gh);
+	} else {
+		/* The cell is mapside() pixels; its level-(d + k) cells,
+		   side / 2^k, counted exactly. */
+		for (k = 0; mapside() >= 2L << k; k++)
+			;
+		if (w->d + k > QT_MAXLEVEL)
+			return;
+		w->lb = w->d + k;
+		w->gx = w->cx << k;
+		w->gy = w->cy << k;
+		w->gw = w->gh = (size_t)1 << k;
+	}
+	w->rows = xreallocarray(NULL, w->gh, sizeof(*w->rows));
+	memset(w->rows, 0, w->gh * sizeof(*w->rows));
+}
+
+/* Merges a leaf of level lb or deeper into its block. */
+static void
+block(int level, uint64_t ix, uint64_t iy, unsigned bits)
+{
+	struct window *w = &pic.win;
+	int shift = level - w->lb;
+	uint64_t bx = (ix >> shift) - w->gx, by = (iy >> shift) - w->gy;
+
+	if (bx >= w->gw || by >= w->gh)
+		return;
+	if (w->rows[by] == NULL) {
+		w->rows[by] = xmalloc(w->gw);
+		memset(w->rows[by], 0, w->gw);
+	}
+	w->rows[by][bx] |= bits;
+}
+
+/*
+ * What an earlier window held, moved into the window now, which holds it:
+ * its blocks, and its squares that are now under 2 pixels.
+ */
+static void
+refill(struct window *old)
+{
+	struct square *s;
+	size_t i, j, n = 0;
+
+	for (j = 0; j < old->gh; j++) {
+		if (old->rows[j] == NULL)
+			continue;
+		for (i = 0; i < old->gw; i++)
+			if (old->rows[j][i] != 0)
+				block(old->lb, old->gx + i, old->gy + j,
+				    old->rows[j][i]);
+		free(old->rows[j]);
+	}
+	free(old->rows);
+	for (i = 0; i < pic.nsq; i++) {
+		s = &pic.sq[i];
+		if (s->level >= pic.win.lb)
+			block(s->level, s->ix, s->iy,
+			    CLASSBIT(classletter[s->k]));
+		else
+			pic.sq[n++] = *s;
+	}
+	pic.nsq = n;
+}
+
+/* The window is the tree cell (d, cx, cy), which holds the last one. */
+static void
+cellwindow(int d, uint64_t cx, uint64_t cy)
+{
+	struct window *w = &pic.win, old = pic.win;
+
+	w->set = 1;
+	w->d = d;
+	w->cx = cx;
+	w->cy = cy;
+	w->x0 = cellcoord(pic.u.x0, pic.u.size, d, cx);
+	w->y0 = cellcoord(pic.u.y0, pic.u.size, d, cy);
+	w->x1 = cellcoord(pic.u.x0, pic.u.size, d, cx + 1);
+	w->y1 = cellcoord(pic.u.y0, pic.u.size, d, cy + 1);
+	w->w = w->h = ldexp(pic.u.size, -d);
+	w->scale = mapside() / w->w;
+	w->maph = mapside();
+	grid(w);
+	if (old.set)
+		refill(&old);
+}
+
+/* The window is -b's rectangle. */
+static void
+rectwindow(void)
+{
+	struct window *w = &pic.win;
+
+	w->set = 1;
+	w->d = -1;
+	w->x0 = opt.bx0;
+	w->y0 = opt.by0;
+	w->x1 = opt.bx1;
+	w->y1 = opt.by1;
+	w->w = opt.bx1 - opt.bx0;
+	w->h = opt.by1 - opt.by0;
+	w->scale = mapside() / w->w;
+	w->maph = (hund(w->h * w->scale) + 99) / 100;
+	if (w->maph < 1)
+		w->maph = 1;
+	grid(w);
+}
+
+/*
+ * Without -b, the window is the smallest cell that holds every cell of
+ * the stream, their deepest common ancestor: the universe for a whole
+ * tree, the subtree's root for qtsplit -r.  It grows as cells come.
+ */
+static void
+seecell(const struct cell *c)
+{
+	struct window *w = &pic.win;
+	int d;
+
+	if (opt.bflag)
+		return;
+	if (!w->set) {
+		cellwindow(c->level, c->ix, c->iy);
+		return;
+	}
+	for (d = c->level < w->d ? c->level : w->d; d > 0; d--)
+		if (c->ix >> (c->level - d) == w->cx >> (w->d - d) &&
+		    c->iy >> (c->level - d) == w->cy >> (w->d - d))
+			break;
+	if (d < w->d)
+		cellwindow(d, w->cx >> (w->d - d), w->cy >> (w->d - d));
+}
+
+/* With -b, whether a cell meets the window's interior. */
+static int
+inwindow(const struct cell *c)
+{
+	const struct window *w = &pic.win;
+
+	if (w->d >= 0)
+		return 1;
+	return cellcoord(pic.u.x0, pic.u.size, c->level, c->ix + 1) > w->x0 &&
+	    c->x < w->x0 + w->w &&
+	    cellcoord(pic.u.y0, pic.u.size, c->level, c->iy + 1) > w->y0 &&
+	    c->y < w->y0 + w->h;
+}
+
+static void
+leaf(const struct cell *c)
+{
+	struct square *s;
+	int k = classindex(c->class);
+
+	if (!opt.drawn[k] || !inwindow(c))
+		return;
+	pic.n[k]++;
+	if (c->level > pic.deepest)
+		pic.deepest = c->level;
+	if (c->id > 0)
+		pic.numbered = 1;
+	if (c->level >= pic.win.lb) {
+		block(c->level, c->ix, c->iy, CLASSBIT(c->class));
+		return;
+	}
+	pic.sq = grow(pic.sq, &pic.sqcap, pic.nsq + 1, sizeof(*pic.sq));
+	s = &pic.sq[pic.nsq++];
+	s->ix = c->ix;
+	s->iy = c->iy;
+	s->id = c->id;
+	s->level = c->level;
+	s->k = k;
+}
+
+static void
+ring(const struct ring *g)
+{
+	struct ringrec *r;
+
+	pic.rv = grow(pic.rv, &pic.rvcap, pic.nrv + g->n, sizeof(*pic.rv));
+	memcpy(pic.rv + pic.nrv, g->v, g->n * sizeof(*g->v));
+	pic.rings = grow(pic.rings, &pic.ringcap, pic.nrings + 1,
+	    sizeof(*pic.rings));
+	r = &pic.rings[pic.nrings++];
+	r->first = pic.nrv;
+	r->n = g->n;
+	r->hole = g->hole;
+	pic.nrv += g->n;
+	pic.nring[g->hole != 0]++;
+}
+
+static void
+meshvertex(const struct meshvertex *mv)
+{
+	pic.verts = grow(pic.verts, &pic.vertcap, pic.nverts + 1,
+	    sizeof(*pic.verts));
+	pic.verts[pic.nverts++] = mv->p;
+}
+
+static void
+meshelem(const struct meshelem *e)
+{
+	pic.elems = grow(pic.elems, &pic.elemcap, pic.nelemw + 1 + e->n,
+	    sizeof(*pic.elems));
+	pic.elems[pic.nelemw] = e->n;
+	memcpy(pic.elems + pic.nelemw + 1, e->v, e->n * sizeof(*e->v));
+	pic.nelemw += 1 + e->n;
+	pic.nelems++;
+}
+
+/*
+ * A layer of the picture: a group whose start tag is written before its
+ * first path element, and path elements of at most CHUNK subpaths.
+ */
+struct layer {
+	const char	*head;
+	int		 open;
+	const char	*attrs;		/* of its path elements, each ending in
+					   a space */
+	unsigned long	 n;		/* subpaths in the current ones */
+};
+
+static void
+subpath(struct layer *ly)
+{
+	if (!ly->open) {
+		outs(ly->head);
+		ly->open = 1;
+	}
+	if (ly->n % CHUNK == 0) {
+		if (ly->n > 0)
+			outs("\"/>\n");
+		outs("<path ");
+		outs(ly->attrs);
+		outs("d=\"");
+	}
+	ly->n++;
+}
+
+/* Ends the path elements; the next ones take attrs. */
+static void
+pathattrs(struct layer *ly, const char *attrs)
+{
+	if (ly->n > 0)
+		outs("\"/>\n");
+	ly->n = 0;
+	ly->attrs = attrs;
+}
+
+static void
+layerend(struct layer *ly)
+{
+	pathattrs(ly, "");
+	if (ly->open)
+		outs("</g>\n");
+	ly->open = 0;
+}
+
+/* A rectangle from its upper left corner across, down and back. */
+static void
+rect(struct layer *ly, int level, uint64_t ix, uint64_t iy, long long x0,
+    long long x1, long long y0, long long y1)
+{
+	struct leveltexts *t = &kept[level];
+	char buf[5 * sizeof(struct numtext) + 8], *p = buf;
+
+	subpath(ly);
+	*p++ = 'M';
+	p = putnum(p, &t->x[ix % NKEPT], x0);
+	*p++ = ' ';
+	p = putnum(p, &t->y[iy % NKEPT], y1);
+	*p++ = 'h';
+	p = putnum(p, &t->side[0][(x1 - x0) & 1], x1 - x0);
+	*p++ = 'v';
+	p = putnum(p, &t->side[1][(y0 - y1) & 1], y0 - y1);
+	*p++ = 'h';
+	p = putnum(p, &t->side[2][(x0 - x1) & 1], x0 - x1);
+	*p++ = 'z';
+	out(buf, p - buf);
+}
+
+/*
+ * The cells of a level from column ix to ix2 (excluded) in row iy, as one
+ * rectangle inside the map, left, top, right, bottom; its corners are
+ * those of qtree(5).  0 when nothing of it is inside.
+ */
+static int
+cellbox(int level, uint64_t ix, uint64_t ix2, uint64_t iy, long long r[4])
+{
+	r[0] = clampll(pixelx(cellcoord(pic.u.x0, pic.u.size, level, ix)),
+	    box[0], box[2]);
+	r[1] = clampll(pixely(cellcoord(pic.u.y0, pic.u.size, level, iy + 1)),
+	    box[1], box[3]);
+	r[2] = clampll(pixelx(cellcoord(pic.u.x0, pic.u.size, level, ix2)),
+	    box[0], box[2]);
+	r[3] = clampll(pixely(cellcoord(pic.u.y0, pic.u.size, level, iy)),
+	    box[1], box[3]);
+	return r[2] > r[0] && r[3] > r[1];
+}
+
+static void
+cellrect(struct layer *ly, int level, uint64_t ix, uint64_t ix2, uint64_t iy)
+{
+	long long r[4];
+
+	if (cellbox(level, ix, ix2, iy, r))
+		rect(ly, level, ix, iy, r[0], r[2], r[3], r[1]);
+}
+
+/*
+ * The squares of class k level by level, each level's outlined in an
+ * eighth of its side, at most a pixel; then the grid's blocks of class k,
+ * row by row from the top, a rectangle a run, with no outline, every
+ * pixel taking the colour of the block at its centre.
+ */
+static void
+leaves(int k)
+{
+	struct window *w = &pic.win;
+	struct layer ly = { 0 };
+	char head[256], width[64], num[32];
+	unsigned long long count[QT_MAXLEVEL + 1] = { 0 };
+	size_t i, j, e;
+	int l;
+
+	snprintf(head, sizeof(head), "<g id=\"leaves-%c\" fill=\"%s\" "
+	    "stroke=\"#000000\" stroke-opacity=\"0.35\" stroke-width=\"1\">\n",
+	    classletter[k], classcolour[k]);
+	ly.head = head;
+	ly.attrs = "";
+	for (i = 0; i < pic.nsq; i++)
+		if (pic.sq[i].k == k)
+			count[pic.sq[i].level]++;
+	for (l = 0; l <= QT_MAXLEVEL; l++) {
+		if (count[l] == 0)
+			continue;
+		fmthund(num, hund(clamp(cellpixels(l) / 8, 0.01, 1)));
+		snprintf(width, sizeof(width), "stroke-width=\"%s\" ", num);
+		pathattrs(&ly, strcmp(num, "1") == 0 ? "" : width);
+		for (i = 0; i < pic.nsq; i++) {
+			const struct square *s = &pic.sq[i];
+
+			if (s->k == k && s->level == l)
+				cellrect(&ly, l, s->ix, s->ix + 1, s->iy);
+		}
+	}
+	pathattrs(&ly, "stroke=\"none\" shape-rendering=\"crispEdges\" ");
+	for (j = w->gh; j-- > 0; ) {
+		const unsigned char *row = w->rows[j];
+
+		if (row == NULL)
+			continue;
+		for (i = 0; i < w->gw; i = e) {
+			for (e = i + 1; e < w->gw &&
+			    blockclass(row[e]) == blockclass(row[i]); e++)
+				;
+			if (blockclass(row[i]) == k)
+				cellrect(&ly, w->lb, w->gx + i, w->gx + e,
+				    w->gy + j);
+		}
+	}
+	layerend(&ly);
+}
+
+/* The clip box: the map and room for strokes and dots across its edges. */
+static long long clipbox[4];
+
+static int
+outcode(long long x, long long y)
+{
+	return (x < clipbox[0]) | (y < clipbox[1]) << 1 |
+	    (x > clipbox[2]) << 2 | (y > clipbox[3]) << 3;
+}
+
+/*
+ * The rings of one kind.  A ring is an open polyline back to its first
+ * vertex, so that a long one can go on in the next path element from
+ * where the last one stopped.
+ */
+struct ringpath {
+	const char	*head;
+	int		 open;
+	size_t		 n;		/* vertices in the path element */
+	long long	 lastx, lasty;
+};
+
+static void
+ringvertex(struct ringpath *rp, long long x, long long y, int move)
+{
+	if (!rp->open) {
+		outs(rp->head);
+		outs("<path d=\"");
+		rp->open = 1;
+		rp->n = 0;
+	} else if (rp->n >= RINGCHUNK) {
+		outs("\"/>\n<path d=\"");
+		rp->n = 0;
+		if (!move) {
+			out("M", 1);
+			outxy(rp->lastx, rp->lasty);
+			rp->n = 1;
+		}
+	}
+	out(move ? "M" : " ", 1);
+	outxy(x, y);
+	rp->n++;
+	rp->lastx = x;
+	rp->lasty = y;
+}
+
+/*
+ * A vertex that lands where the last one drawn did is left out, and so is
+ * one that lies, with the last drawn and the next, beyond one side of the
+ * clip box: the line that replaces its two lies there too.
+ */
+static void
+drawring(struct ringpath *rp, const struct ringrec *r)
+{
+	const struct point *v = pic.rv + r->first;
+	long long x0 = pixelx(v[0].x), y0 = pixely(v[0].y), x, y, nx, ny;
+	int last, code, ncode;
+	size_t i;
+
+	ringvertex(rp, x0, y0, 1);
+	last = outcode(x0, y0);
+	x = pixelx(v[1 % r->n].x);
+	y = pixely(v[1 % r->n].y);
+	code = outcode(x, y);
+	for (i = 1; i < r->n; i++) {
+		if (i + 1 < r->n) {
+			nx = pixelx(v[i + 1].x);
+			ny = pixely(v[i + 1].y);
+		} else {
+			nx = x0;
+			ny = y0;
+		}
+		ncode = outcode(nx, ny);
+		if ((x != rp->lastx || y != rp->lasty) &&
+		    (last & code & ncode) == 0) {
+			ringvertex(rp, x, y, 0);
+			last = code;
+		}
+		x = nx;
+		y = ny;
+		code = ncode;
+	}
+	ringvertex(rp, x0, y0, 0);
+}
+
+static void
+rings(void)
+{
+	char head[2][256];
+	struct ringpath rp[2] = { { 0 }, { 0 } };
+	size_t i;
+	int h;
+
+	snprintf(head[0], sizeof(head[0]), "<g id=\"outer-rings\" "
+	    "fill=\"none\" %s stroke-linejoin=\"round\" "
+	    "clip-path=\"url(#map)\">\n", ringstyle);
+	snprintf(head[1], sizeof(head[1]), "<g id=\"holes\" fill=\"none\" "
+	    "%s %s stroke-linejoin=\"round\" clip-path=\"url(#map)\">\n",
+	    ringstyle, holestyle);
+	for (h = 0; h < 2; h++) {
+		rp[h].head = head[h];
+		for (i = 0; i < pic.nrings; i++)
+			if ((pic.rings[i].hole != 0) == h)
+				drawring(&rp[h], &pic.rings[i]);
+		if (rp[h].open)
+			outs("\"/>\n</g>\n");
+	}
+}
+
+static void
+vertexpx(unsigned long long id, long long *x, long long *y)
+{
+	*x = pixelx(pic.verts[id - 1].x);
+	*y = pixely(pic.verts[id - 1].y);
+}
+
+/* An element's box and centre; 0 when it lies outside the clip box. */
+static int
+elembox(const unsigned long long *e, long long b[4], long long c[2])
+{
+	long long x, y;
+	unsigned long long k;
+
+	c[0] = c[1] = 0;
+	for (k = 0; k < e[0]; k++) {
+		vertexpx(e[1 + k], &x, &y);
+		if (k == 0 || x < b[0])
+			b[0] = x;
+		if (k == 0 || y < b[1])
+			b[1] = y;
+		if (k == 0 || x > b[2])
+			b[2] = x;
+		if (k == 0 || y > b[3])
+			b[3] = y;
+		c[0] += x;
+		c[1] += y;
+	}
+	c[0] /= (long long)e[0];
+	c[1] /= (long long)e[0];
+	return b[2] >= clipbox[0] && b[0] <= clipbox[2] &&
+	    b[3] >= clipbox[1] && b[1] <= clipbox[3];
+}
+
+/* The smallest side drawn, of an element or the smallest leaf, pixels. */
+static double
+finest(void)
+{
+	const unsigned long long *e = pic.elems;
+	long long b[4], c[2];
+	double f = -1, s;
+	size_t i;
+
+	for (i = 0; i < pic.nelems; i++, e += 1 + e[0]) {
+		if (!elembox(e, b, c))
+			continue;
+		s = (b[2] - b[0] < b[3] - b[1] ? b[2] - b[0] : b[3] - b[1]) /
+		    100.0;
+		if (f < 0 || s < f)
+			f = s;
+	}
+	if (pic.deepest >= 0 && (f < 0 || cellpixels(pic.deepest) < f))
+		f = cellpixels(pic.deepest);
+	return f >= 0 ? f : mapside();
+}
+
+/* A layer of black lines, width pixels wide, clipped to the map. */
+static void
+strokelayer(struct layer *ly, char head[256], const char *id, double width,
+    const char *style)
+{
+	char num[32];
+
+	fmthund(num, hund(width));
+	snprintf(head, 256, "<g id=\"%s\" fill=\"none\" stroke=\"#000000\" "
+	    "stroke-width=\"%s\" %s clip-path=\"url(#map)\">\n", id, num,
+	    style);
+	ly->head = head;
+	ly->attrs = "";
+}
+
+/* Elements use only vertices defined before them. */
+static void
+elements(double f)
+{
+	const unsigned long long *e = pic.elems;
+	struct layer ly = { 0 };
+	char head[256];
+	long long b[4], c[2], x, y;
+	unsigned long long k;
+	size_t i;
+
+	strokelayer(&ly, head, "elements", clamp(f / 8, 0.01, 1),
+	    "stroke-linejoin=\"round\"");
+	for (i = 0; i < pic.nelems; i++, e += 1 + e[0]) {
+		if (!elembox(e, b, c))
+			continue;
+		subpath(&ly);
+		for (k = 0; k < e[0]; k++) {
+			vertexpx(e[1 + k], &x, &y);
+			out(k == 0 ? "M" : " ", 1);
+			outxy(x, y);
+		}
+		out("z", 1);
+	}
+	layerend(&ly);
+}
+
+/* A zero-length line with round caps is a dot. */
+static void
+vertices(double f)
+{
+	struct layer ly = { 0 };
+	char head[256];
+	long long x, y;
+	size_t i;
+
+	strokelayer(&ly, head, "vertices", clamp(f / 5, 0.5, 5),
+	    "stroke-linecap=\"round\"");
+	for (i = 0; i < pic.nverts; i++) {
+		vertexpx(i + 1, &x, &y);
+		if (outcode(x, y) != 0)
+			continue;
+		subpath(&ly);
+		out("M", 1);
+		outxy(x, y);
+		out("h0", 2);
+	}
+	layerend(&ly);
+}
+
+/* The picture above the legend, in hundredths. */
+static long long
+mapbottom(void)
+{
+	return (2LL * opt.margin + pic.win.maph) * 100;
+}
+
+/*
+ * A number whose digits' middle is at x, y, as large as the cell allows
+ * and no larger than the legend's text, kept inside the picture: a digit
+ * is at most 0.6 of the font size wide and rises 0.75 of it.
+ */
+static void
+label(long long x, long long y, double size, unsigned long long id)
+{
+	char num[24];
+	double fs;
+	int digits = fmtint(num, (long long)id) - num;
+	long long half;
+
+	fs = clamp(size * 1.4 / (digits > 2 ? digits : 2), 0.01, 12);
+	half = hund(0.3 * fs * digits);
+	outs("<text x=\"");
+	outhund(clampll(x, half, opt.width * 100LL - half));
+	outs("\" y=\"");
+	outhund(clampll(y + hund(0.35 * fs), hund(0.75 * fs), mapbottom()));
+	outs("\" font-size=\"");
+	outhund(hund(fs));
+	outs("\">");
+	outs(num);
+	outs("</text>\n");
+}
+
+static void
+numbers(double f)
+{
+	const unsigned long long *e = pic.elems;
+	long long b[4], c[2], x, y, fs, w;
+	char num[24];
+	size_t i;
+	int digits;
+
+	if (opt.nflag && (pic.nelems > 0 || pic.numbered)) {
+		outs("<g id=\"element-numbers\" font-family=\"sans-serif\" "
+		    "text-anchor=\"middle\" fill=\"#000000\">\n");
+		for (i = 0; i < pic.nelems; i++, e += 1 + e[0])
+			if (elembox(e, b, c))
+				label(c[0], c[1], (b[2] - b[0]) / 100.0, i + 1);
+		for (i = 0; pic.nelems == 0 && i < pic.nsq; i++) {
+			const struct square *s = &pic.sq[i];
+
+			if (s->id > 0 &&
+			    cellbox(s->level, s->ix, s->ix + 1, s->iy, b))
+				label((b[0] + b[2]) / 2, (b[1] + b[3]) / 2,
+				    (b[2] - b[0]) / 100.0, s->id);
+		}
+		outs("</g>\n");
+	}
+	if (!opt.Nflag || pic.nverts == 0)
+		return;
+	fs = hund(clamp(f / 3, 1, 10));
+	outs("<g id=\"vertex-numbers\" font-family=\"sans-serif\" "
+	    "font-size=\"");
+	outhund(fs);
+	outs("\" fill=\"#000000\">\n");
+	/* Above and to the right of the dot, clear of its lines. */
+	for (i = 0; i < pic.nverts; i++) {
+		vertexpx(i + 1, &x, &y);
+		if (outcode(x, y) != 0)
+			continue;
+		digits = fmtint(num, (long long)i + 1) - num;
+		w = 6 * fs * digits / 10;
+		outs("<text x=\"");
+		outhund(clampll(x + 150, 0, opt.width * 100LL - w));
+		outs("\" y=\"");
+		outhund(clampll(y - 150, 3 * fs / 4, mapbottom()));
+		outs("\">");
+		outs(num);
+		outs("</text>\n");
+	}
+	outs("</g>\n");
+}
+
 static void
 legendrow(int row, const char *swatch, const char *text, long long count)
 {
 	char num[24];
-	long long top = (long long)(opt.width + ROW * row + 2) * 100;
+	long long top = mapbottom() + (long long)(ROW * row + 2) * 100;
 
 	fmtint(num, count);
 	outs(swatch);
@@ -515,8 +1052,114 @@ legendrows(void)
 
 	for (k = 0; k < NCLASS; k++)
 		n += opt.drawn[k];
-	return n + (pic.rings.n[0] > 0) + (pic.rings.n[1] > 0) +
-	    (pic.mesh.nelems > 0) + (pic.mesh.nverts > 0);
+	return n + (pic.nring[0] > 0) + (pic.nring[1] > 0) +
+	    (pic.nelems > 0) + (pic.nverts > 0) + 2;
+}
+
+/*
+ * The scale bar's length in world units, 1, 2 or 5 times a power of ten,
+ * the largest that is at most a quarter of the map's width, as text; the
+ * bar is drawn from the value that text reads as.
+ */
+static double
+scalebar(char *text)
+{
+	double target = mapside() / 4.0 / pic.win.scale, v;
+	const char *end;
+	int k = (int)floor(log10(target)), digit, i;
+	char *p = text;
+
+	v = target / pow(10, k);
+	digit = v >= 5 ? 5 : v >= 2 ? 2 : 1;
+	if (k < -6 || k > 6)
+		snprintf(text, 32, "%de%d", digit, k);
+	else {
+		if (k < 0) {
+			*p++ = '0';
+			*p++ = '.';
+			for (i = -1; i > k; i--)
+				*p++ = '0';
+		}
+		*p++ = '0' + digit;
+		for (i = 0; i < k; i++)
+			*p++ = '0';
+		*p = '\0';
+	}
+	if (parsereal(text, &end, &v) < 0)
+		v = 0;
+	return v;
+}
+
+/* A window's coordinate, to a pixel or finer. */
+static char *
+fmtwindow(char *p, double v)
+{
+	int d = (int)clamp(ceil(log10(pic.win.scale)), 0, 17);
+	double t = pow(10, d), r = round(v * t) / t;
+
+	return fmtreal(p, isfinite(r) ? r : v);
+}
+
+/* The four corners, as -b takes them. */
+static void
+outwindow(int exact)
+{
+	const struct window *w = &pic.win;
+	char num[32];
+	double v[4] = { w->x0, w->y0, w->x1, w->y1 };
+	int i;
+
+	for (i = 0; i < 4; i++) {
+		if (exact)
+			fmtreal(num, v[i]);
+		else
+			fmtwindow(num, v[i]);
+		if (i > 0)
+			out(",", 1);
+		outs(num);
+	}
+}
+
+/* The scale bar, and the tree's level and the window. */
+static void
+legendscale(int row)
+{
+	char text[32];
+	long long top = mapbottom() + (long long)(ROW * row + 2) * 100;
+	long long x = (long long)opt.margin * 100;
+	long long len = hund(scalebar(text) * pic.win.scale);
+
+	outs("<path d=\"M");
+	outxy(x, top + 600);
+	out("h", 1);
+	outhund(len);
+	out("M", 1);
+	outxy(x, top);
+	outs("v12M");
+	outxy(x + len, top);
+	outs("v12\" fill=\"none\" stroke=\"#000000\" "
+	    "stroke-width=\"1.5\"/>\n<text x=\"");
+	outhund(x + len + 600);
+	outs("\" y=\"");
+	outhund(top + 1050);
+	outs("\">");
+	outs(text);
+	outs(strcmp(text, "1") == 0 ? " unit" : " units");
+	outs("</text>\n<text x=\"");
+	top += ROW * 100;
+	outhund(x);
+	outs("\" y=\"");
+	outhund(top + 1050);
+	outs("\">");
+	if (pic.level >= 0 || pic.deepest >= 0) {
+		fmtint(text, pic.level >= 0 ? pic.level : pic.deepest);
+		outs("level ");
+		outs(text);
+		outs(", ");
+	}
+	outs("window ");
+	outwindow(0);
+	outs("</text>\n");
 }
 
 static void
@@ -525,8 +1168,6 @@ legend(void)
 	char swatch[256], text[32];
 	int k, row = 0;
 
-	if (legendrows() == 0)
-		return;
 	outs("<g id=\"legend\" font-family=\"sans-serif\" font-size=\"12\">\n");
 	for (k = 0; k < NCLASS; k++) {
 		if (!opt.drawn[k])
@@ -536,25 +1177,26 @@ legend(void)
 		    classcolour[k]);
 		snprintf(text, sizeof(text), "%c %s", classletter[k],
 		    classname[k]);
-		legendrow(row++, swatch, text, pic.leaves.n[k]);
+		legendrow(row++, swatch, text, pic.n[k]);
 	}
 	/* Ring and mesh swatches are squares drawn the way the map draws. */
-	if (pic.rings.n[0] > 0) {
+	if (pic.nring[0] > 0) {
 		snprintf(swatch, sizeof(swatch), "<rect fill=\"none\" %s",
 		    ringstyle);
-		legendrow(row++, swatch, "outer rings", pic.rings.n[0]);
+		legendrow(row++, swatch, "outer rings", pic.nring[0]);
 	}
-	if (pic.rings.n[1] > 0) {
+	if (pic.nring[1] > 0) {
 		snprintf(swatch, sizeof(swatch), "<rect fill=\"none\" %s %s",
 		    ringstyle, holestyle);
-		legendrow(row++, swatch, "holes", pic.rings.n[1]);
+		legendrow(row++, swatch, "holes", pic.nring[1]);
 	}
-	if (pic.mesh.nelems > 0)
+	if (pic.nelems > 0)
 		legendrow(row++, "<rect fill=\"none\" stroke=\"#000000\"",
-		    "elements", pic.mesh.nelems);
-	if (pic.mesh.nverts > 0)
+		    "elements", pic.nelems);
+	if (pic.nverts > 0)
 		legendrow(row++, "<rect fill=\"#000000\" rx=\"6\"",
-		    "vertices", pic.mesh.nverts);
+		    "vertices", pic.nverts);
+	legendscale(row);
 	outs("</g>\n");
 }
 
@@ -570,89 +1212,44 @@ svghead(long long height)
 	fmtreal(x0, pic.u.x0);
 	fmtreal(y0, pic.u.y0);
 	fmtreal(size, pic.u.size);
-	printf("<desc>universe %s %s %s, drawn by qt2svg</desc>\n", x0, y0,
-	    size);
+	printf("<desc>universe %s %s %s, window ", x0, y0, size);
+	outwindow(1);
+	outs(", drawn by qt2svg</desc>\n");
 	outs("<rect width=\"100%\" height=\"100%\" fill=\"#FFFFFF\"/>\n");
-}
-
-/* Everything but the numbers and the legend; f is the finest side. */
-static void
-shapes(double f)
-{
-	char head[256], outline[128], num[32];
-	int k;
-
-	/*
-	 * Outlines of cells under 2 pixels would only darken the picture,
-	 * and antialiasing would leave light seams between the squares:
-	 * there, every pixel takes the colour of the cell at its centre.
-	 */
-	fmthund(num, hund(clamp(f / 8, 0.01, 1)));
-	if (f >= 2)
-		snprintf(outline, sizeof(outline), "stroke=\"#000000\" "
-		    "stroke-opacity=\"0.35\" stroke-width=\"%s\"", num);
-	else
-		snprintf(outline, sizeof(outline),
-		    "shape-rendering=\"crispEdges\"");
-	for (k = 0; k < NCLASS; k++) {
-		snprintf(head, sizeof(head), "<g id=\"leaves-%c\" fill=\"%s\" "
-		    "%s>\n", classletter[k], classcolour[k], outline);
-		outpaths(head, &pic.leaves.path[k]);
-	}
-	snprintf(head, sizeof(head), "<g id=\"elements\" fill=\"none\" "
-	    "stroke=\"#000000\" stroke-width=\"%s\" "
-	    "stroke-linejoin=\"round\">\n", num);
-	outpaths(head, &pic.mesh.path);
-	snprintf(head, sizeof(head), "<g id=\"outer-rings\" fill=\"none\" %s "
-	    "stroke-linejoin=\"round\">\n", ringstyle);
-	outpaths(head, &pic.rings.path[0]);
-	snprintf(head, sizeof(head), "<g id=\"holes\" fill=\"none\" %s %s "
-	    "stroke-linejoin=\"round\">\n", ringstyle, holestyle);
-	outpaths(head, &pic.rings.path[1]);
-	/* A zero-length line with round caps is a dot. */
-	fmthund(num, hund(clamp(f / 5, 0.5, 5)));
-	snprintf(head, sizeof(head), "<g id=\"vertices\" fill=\"none\" "
-	    "stroke=\"#000000\" stroke-width=\"%s\" "
-	    "stroke-linecap=\"round\">\n", num);
-	outpaths(head, &pic.mesh.dots);
-}
-
-static void
-numbers(double f)
-{
-	const struct meshlayer *m = &pic.mesh;
-	const struct buf *b = m->nelems > 0 ? &m->elemlabels :
-	    &pic.leaves.labels;
-
-	if (opt.nflag && b->len > 0) {
-		outs("<g id=\"element-numbers\" font-family=\"sans-serif\" "
-		    "text-anchor=\"middle\" fill=\"#000000\">\n");
-		outbuf(b);
-		outs("</g>\n");
-	}
-	if (opt.Nflag && m->vertlabels.len > 0) {
-		outs("<g id=\"vertex-numbers\" font-family=\"sans-serif\" "
-		    "font-size=\"");
-		outhund(hund(clamp(f / 3, 1, 10)));
-		outs("\" fill=\"#000000\">\n");
-		outbuf(&m->vertlabels);
-		outs("</g>\n");
-	}
+	/* Rings and the mesh are cut at the map, with room for strokes. */
+	outs("<defs><clipPath id=\"map\"><rect x=\"");
+	outhund(clipbox[0]);
+	outs("\" y=\"");
+	outhund(clipbox[1]);
+	outs("\" width=\"");
+	outhund(clipbox[2] - clipbox[0]);
+	outs("\" height=\"");
+	outhund(clipbox[3] - clipbox[1]);
+	outs("\"/></clipPath></defs>\n");
 }
 
 static void
 writesvg(void)
 {
+	struct window *w = &pic.win;
 	double f;
-	int rows = legendrows();
+	int k, rows = legendrows();
 
-	if (pic.leaves.deepest >= 0)
-		seefeature(ldexp(pic.u.size, -pic.leaves.deepest) * pic.scale);
-	f = pic.finest >= 0 ? pic.finest : opt.width - 2 * opt.margin;
-
-	svghead(opt.width + (long long)ROW * rows +
-	    (rows > 0 ? opt.margin : 0));
-	shapes(f);
+	if (!w->set)
+		cellwindow(0, 0, 0);
+	box[0] = box[1] = opt.margin * 100LL;
+	box[2] = hund(opt.margin + w->w * w->scale);
+	box[3] = hund(opt.margin + w->h * w->scale);
+	for (k = 0; k < 4; k++)
+		clipbox[k] = box[k] + (k < 2 ? -CLIPPAD : CLIPPAD);
+	f = finest();
+	svghead(mapbottom() / 100 + (long long)ROW * rows + opt.margin);
+	for (k = 0; k < NCLASS; k++)
+		if (opt.drawn[k])
+			leaves(k);
+	elements(f);
+	rings();
+	vertices(f);
 	numbers(f);
 	legend();
 	outs("</svg>\n");
@@ -681,6 +1278,30 @@ pixels(int ch, const char *arg, long long lo)
 	return v;
 }
 
+/* -b x0,y0,x1,y1 */
+static void
+optwindow(const char *arg)
+{
+	double v[4];
+	const char *p = arg, *end;
+	int i;
+
+	for (i = 0; i < 4; i++) {
+		if (parsereal(p, &end, &v[i]) < 0 || !coordok(v[i]) ||
+		    *end != (i < 3 ? ',' : '\0'))
+			die(2, "-b: a window is four numbers x0,y0,x1,y1: %s",
+			    arg);
+		p = end + 1;
+	}
+	if (v[2] <= v[0] || v[3] <= v[1])
+		die(2, "-b: x1 must exceed x0, and y1 y0: %s", arg);
+	opt.bflag = 1;
+	opt.bx0 = v[0];
+	opt.by0 = v[1];
+	opt.bx1 = v[2];
+	opt.by1 = v[3];
+}
+
 int
 main(int argc, char *argv[])
 {
@@ -691,8 +1312,11 @@ main(int argc, char *argv[])
 
 	setprogname_(argv[0]);
 	setdrawn(optclasses("FEP"));
-	while ((ch = getopt(argc, argv, "c:m:nNvw:")) != -1)
+	while ((ch = getopt(argc, argv, "b:c:m:nNvw:")) != -1)
 		switch (ch) {
+		case 'b':
+			optwindow(optarg);
+			break;
 		case 'c':
 			setdrawn(optclasses(optarg));
 			break;
@@ -718,7 +1342,7 @@ main(int argc, char *argv[])
 	argv += optind;
 	if (argc > 1)
 		usage();
-	if (opt.width - 2 * opt.margin < 1)
+	if (mapside() < 1)
 		die(2, "-m %d leaves no room in -w %d", opt.margin, opt.width);
 
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
@@ -727,12 +1351,20 @@ main(int argc, char *argv[])
 		switch (kind) {
 		case QT_UNIVERSE:
 			pic.u = rec.u;
-			pic.scale = (opt.width - 2 * opt.margin) / pic.u.size;
+			if (opt.bflag)
+				rectwindow();
+			break;
+		case QT_LEVEL:
+			pic.level = rec.level;
 			break;
 		case QT_RING:
 			ring(&rec.ring);
 			break;
+		case QT_NODE:
+			seecell(&rec.c);
+			break;
 		case QT_LEAF:
+			seecell(&rec.c);
 			leaf(&rec.c);
 			break;
 		case QT_VERTEX:
@@ -745,10 +1377,10 @@ main(int argc, char *argv[])
 			break;
 		}
 	}
-	if (opt.nflag && pic.mesh.nelems == 0 && pic.leaves.nlabels == 0)
+	if (opt.nflag && pic.nelems == 0 && !pic.numbered)
 		warnat(qt_name(r), 0, "-n: no element numbers in the stream "
 		    "(qtleaves adds them)");
-	if (opt.Nflag && pic.mesh.nverts == 0)
+	if (opt.Nflag && pic.nverts == 0)
 		warnat(qt_name(r), 0, "-N: no vertex records in the stream "
 		    "(qtleaves -n adds them)");
 	qt_close(r);
