@@ -68,11 +68,15 @@ test: all tests/fmtcheck
 
 # The report's case 1 through the whole pipeline: the README's gallery
 # (tests/gallery.bats fails when these files are stale) and the figures.
-GALLERY = samples/amoeba-4.svg samples/amoeba-6.svg samples/amoeba-8.svg
+# Then the finite-element mesh: balanced, conforming, around the hole.
+GALLERY = samples/amoeba-4.svg samples/amoeba-6.svg samples/amoeba-8.svg \
+	samples/amoeba-mesh.svg
 demo: all
 	for l in 4 6 8; do \
 	    ./polyread samples/amoeba.brep | ./qtsplit -l $$l | ./qt2svg \
 	    > samples/amoeba-$$l.svg || exit 1; done
+	./polyread samples/amoeba.brep | ./qtsplit -l 6 | ./qtbalance | \
+	    ./qtmesh | ./qt2svg -w 600 -b 8,8,14,14 > samples/amoeba-mesh.svg
 	@echo "wrote $(GALLERY)"
 	./polyread samples/amoeba.brep | ./qtsplit -l 8 | ./qtstats
 

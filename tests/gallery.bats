@@ -14,6 +14,12 @@ load test_helper
 			return 1
 		}
 	done
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | qtbalance | qtmesh |
+	    qt2svg -w 600 -b 8,8,14,14 > m.svg
+	cmp -s "$SAMPLES/amoeba-mesh.svg" m.svg || {
+		echo "samples/amoeba-mesh.svg is stale: run make demo"
+		return 1
+	}
 }
 
 @test "the README's figures are qtstats's" {
@@ -121,4 +127,21 @@ load test_helper
 	leaf 3 1 1 1 1 1 1 E
 	EOF
 	diff -u hand got
+}
+
+@test "README: the FE-mesh pipeline gives the figures it shows, and Gmsh reads its file" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 -L holes=8 | qtbalance |
+	    qtmesh -r | qtstats | tail -7 > got
+	sed -n '/^    \$ polyread samples\/amoeba.brep | qtsplit -l 6 -L holes=8 | qtbalance |$/,/^$/p' \
+	    "$TOP/README" | awk 'NF == 2 && $1 ~ /^[a-z_]+$/ { print $1, $2 }' > readme.txt
+	[ "$(wc -l < readme.txt)" -eq 7 ]
+	diff -u readme.txt got
+	# and a conforming mesh has no hanging vertex, by qtstats's own count
+	grep -qx 'hanging_vertices 0' got
+	command -v gmsh >/dev/null || skip "gmsh not installed"
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 -L holes=8 | qtbalance |
+	    qtmesh -r -f msh > amoeba.msh
+	run -0 gmsh -check amoeba.msh
+	[[ "$output" != *[Ww]arning* ]]
+	[[ "$output" != *[Ee]rror* ]]
 }
