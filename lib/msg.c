@@ -120,6 +120,22 @@ openin(const char *path, const char **name)
 	return fp;
 }
 
+/*
+ * The usage line: asked for with -h, on the standard output and exit 0;
+ * after a bad option, on the standard error and exit 2.
+ */
+void
+usageexit(int help, const char *line)
+{
+	if (!help) {
+		fputs(line, stderr);
+		exit(2);
+	}
+	fputs(line, stdout);
+	closeout();
+	exit(0);
+}
+
 /* A full disk must not look like success. */
 void
 closeout(void)

@@ -34,6 +34,7 @@ char	*xstrdup(const char *);
 FILE	*openin(const char *, const char **);
 void	 progress(int, const char *, ...);
 void	 closeout(void);
+void	 usageexit(int, const char *);
 
 /*
  * parse.c: numbers read, in the C locale whatever LANG says; 0 on success

@@ -52,3 +52,21 @@ load test_helper
 	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 -L holes=10 | qtbalance -c | tail -n 1'
 	[[ "$output" == "end "* ]]
 }
+
+@test "every program's -h prints its usage line, which is its page's SYNOPSIS" {
+	for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance; do
+		run -0 --separate-stderr $p -h
+		[ -z "$stderr" ]
+		[ "${#lines[@]}" -eq 1 ]
+		# the same line a bad option prints on the standard error, exit 2
+		usage=$output
+		run -2 --separate-stderr $p -Z
+		[ "${stderr##*$'\n'}" = "$usage" ]
+		# and the SYNOPSIS as mandoc renders it, words and brackets alike
+		synopsis=$(mandoc -T ascii -O width=200 "$TOP/man/$p.1" |
+		    sed 's/.\x08//g' | sed -n '/^SYNOPSIS/,/^DESCRIPTION/p' |
+		    sed '1d;$d' | tr -s ' \n' '  ' | sed 's/^ //;s/ $//')
+		[ "usage: $synopsis" = "$usage" ] || {
+			echo "$p: usage: $usage"; echo "$p: page: $synopsis"; return 1; }
+	done
+}

@@ -297,9 +297,9 @@ sameclasses() {
 
 @test "a bad option or two operands is a usage error" {
 	run -2 --separate-stderr qtbalance -x
-	[ "${stderr_lines[${#stderr_lines[@]}-1]}" = "usage: qtbalance [-cv] [file]" ]
+	[ "${stderr_lines[${#stderr_lines[@]}-1]}" = "usage: qtbalance [-chv] [file]" ]
 	run -2 --separate-stderr qtbalance a b
-	[ "$stderr" = "usage: qtbalance [-cv] [file]" ]
+	[ "$stderr" = "usage: qtbalance [-chv] [file]" ]
 }
 
 @test "-v reports cells read and leaves split on stderr" {

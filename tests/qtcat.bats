@@ -305,7 +305,7 @@ qtree 1'; echo 'end 0'; } > cut.txt
 	run -1 --separate-stderr bash -c 'qtleaves -n "$1" | qtcat -u' _ "$w"
 	[[ "$stderr" == "qtcat: stdin:"*": the input holds a mesh (vertex record): qtcat joins trees" ]]
 	run -2 --separate-stderr qtcat -x
-	[ "${stderr_lines[-1]}" = "usage: qtcat [-u] [file ...]" ]
+	[ "${stderr_lines[-1]}" = "usage: qtcat [-hu] [file ...]" ]
 	run -2 --separate-stderr qtcat - - < "$w"
 }
 

@@ -368,8 +368,8 @@ print(*sorted(cls), *sorted(lev))'
 	run -2 --separate-stderr qtmesh -o m /dev/null
 	run -2 --separate-stderr qtmesh -c X /dev/null
 	run -2 --separate-stderr qtmesh -x
-	[ "${stderr_lines[1]}" = "usage: qtmesh [-HrTv] [-c classes] [-f format] [-o basename] [file]" ]
-	grep -q '^\.Op Fl HrTv$' "$TOP/man/qtmesh.1"
+	[ "${stderr_lines[1]}" = "usage: qtmesh [-HhrTv] [-c classes] [-f format] [-o basename] [file]" ]
+	grep -q '^\.Op Fl HhrTv$' "$TOP/man/qtmesh.1"
 	run -1 --separate-stderr bash -c 'polyread "$SAMPLES/invl.brep" | qtsplit | qtleaves -n | qtmesh'
 	[[ "$stderr" == *"already holds a mesh"* ]]
 }

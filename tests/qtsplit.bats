@@ -223,7 +223,7 @@ uniform() {
 	run -2 --separate-stderr qtsplit -l 8 -r 03 -s 1 a.qt
 	[ "$stderr" = "qtsplit: -s 1 is above the cell 03" ]
 	run -2 --separate-stderr qtsplit -s 1 -t 1 a.qt
-	[ "$stderr" = "usage: qtsplit [-v] [-L ring=level] [-l level] [-m level] [-r path] [-s level | -t level] [file]" ]
+	[ "$stderr" = "usage: qtsplit [-hv] [-L ring=level] [-l level] [-m level] [-r path] [-s level | -t level] [file]" ]
 	run -2 --separate-stderr qtsplit -s 51 a.qt
 	[ "$stderr" = "qtsplit: -s: level must be an integer from 0 to 50: 51" ]
 }

@@ -537,7 +537,7 @@ value() {
 	[[ "$stderr" == "qtstats: cut.qt:"*": truncated stream: no end record" ]]
 	[ -z "$output" ]
 	run -2 --separate-stderr qtstats -x
-	[ "${stderr##*$'\n'}" = "usage: qtstats [-lv] [file]" ]
+	[ "${stderr##*$'\n'}" = "usage: qtstats [-hlv] [file]" ]
 }
 
 @test "qtstats(1): the examples print what the page says" {

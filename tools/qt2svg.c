@@ -113,11 +113,10 @@ static struct picture {
 static long long box[4];
 
 static void
-usage(void)
+usage(int help)
 {
-	fprintf(stderr, "usage: qt2svg [-nNv] [-b x0,y0,x1,y1] [-c classes] "
+	usageexit(help, "usage: qt2svg [-hnNv] [-b x0,y0,x1,y1] [-c classes] "
 	    "[-m margin] [-w width] [file]\n");
-	exit(2);
 }
 
 /* Room for n items of size in *p, which holds *cap. */
@@ -1312,7 +1311,7 @@ main(int argc, char *argv[])
 
 	setprogname_(argv[0]);
 	setdrawn(optclasses("FEP"));
-	while ((ch = getopt(argc, argv, "b:c:m:nNvw:")) != -1)
+	while ((ch = getopt(argc, argv, "b:c:m:nNvw:h")) != -1)
 		switch (ch) {
 		case 'b':
 			optwindow(optarg);
@@ -1335,13 +1334,16 @@ main(int argc, char *argv[])
 		case 'w':
 			opt.width = pixels(ch, optarg, 1);
 			break;
+		case 'h':
+			usage(1);
+			break;
 		default:
-			usage();
+			usage(0);
 		}
 	argc -= optind;
 	argv += optind;
 	if (argc > 1)
-		usage();
+		usage(0);
 	if (mapside() < 1)
 		die(2, "-m %d leaves no room in -w %d", opt.margin, opt.width);
 

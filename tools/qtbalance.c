@@ -73,10 +73,9 @@ static struct classifier {
 } cl = { .depth = -1 };
 
 static void
-usage(void)
+usage(int help)
 {
-	fprintf(stderr, "usage: qtbalance [-cv] [file]\n");
-	exit(2);
+	usageexit(help, "usage: qtbalance [-chv] [file]\n");
 }
 
 static int
@@ -425,7 +424,7 @@ main(int argc, char *argv[])
 	int ch;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "cv")) != -1)
+	while ((ch = getopt(argc, argv, "cvh")) != -1)
 		switch (ch) {
 		case 'c':
 			opt.corners = 1;
@@ -433,13 +432,16 @@ main(int argc, char *argv[])
 		case 'v':
 			opt.verbose = 1;
 			break;
+		case 'h':
+			usage(1);
+			break;
 		default:
-			usage();
+			usage(0);
 		}
 	argc -= optind;
 	argv += optind;
 	if (argc > 1)
-		usage();
+		usage(0);
 
 	t.nodes = cellset_new();
 	r = qt_openpath(argc == 1 ? argv[0] : "-", QT_NEEDUNIVERSE |

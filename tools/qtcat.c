@@ -63,10 +63,9 @@ static struct heldcell *held;
 static size_t nheld, heldcap;
 
 static void
-usage(void)
+usage(int help)
 {
-	fprintf(stderr, "usage: qtcat [-u] [file ...]\n");
-	exit(2);
+	usageexit(help, "usage: qtcat [-hu] [file ...]\n");
 }
 
 static const char *
@@ -532,13 +531,16 @@ main(int argc, char *argv[])
 	int ch, i, nstdin = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "u")) != -1)
+	while ((ch = getopt(argc, argv, "uh")) != -1)
 		switch (ch) {
 		case 'u':
 			unsealed = 1;
 			break;
+		case 'h':
+			usage(1);
+			break;
 		default:
-			usage();
+			usage(0);
 		}
 	argc -= optind;
 	argv += optind;

@@ -27,11 +27,10 @@
 #define GRID	QT_MAXLEVEL
 
 static void
-usage(void)
+usage(int help)
 {
-	fprintf(stderr, "usage: qtleaves [-nv] [-c classes] [-f format] "
+	usageexit(help, "usage: qtleaves [-hnv] [-c classes] [-f format] "
 	    "[file]\n");
-	exit(2);
 }
 
 /* The mesh to write once the stream is read. */
@@ -149,7 +148,7 @@ main(int argc, char *argv[])
 	int ch, kept, nflag = 0, verbose = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "c:f:nv")) != -1)
+	while ((ch = getopt(argc, argv, "c:f:nvh")) != -1)
 		switch (ch) {
 		case 'c':
 			keep = optclasses(optarg);
@@ -163,13 +162,16 @@ main(int argc, char *argv[])
 		case 'v':
 			verbose = 1;
 			break;
+		case 'h':
+			usage(1);
+			break;
 		default:
-			usage();
+			usage(0);
 		}
 	argc -= optind;
 	argv += optind;
 	if (argc > 1)
-		usage();
+		usage(0);
 	if (nflag && format != QTREE)
 		die(2, "-n: a mesh is written in the qtree format only");
 	if (nflag)

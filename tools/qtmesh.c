@@ -119,11 +119,10 @@ static struct pend {
 static size_t npend, pendcap;
 
 static void
-usage(void)
+usage(int help)
 {
-	fprintf(stderr, "usage: qtmesh [-HrTv] [-c classes] [-f format] "
+	usageexit(help, "usage: qtmesh [-HhrTv] [-c classes] [-f format] "
 	    "[-o basename] [file]\n");
-	exit(2);
 }
 
 static void *
@@ -934,7 +933,7 @@ main(int argc, char *argv[])
 	int ch, head;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "HTc:f:o:rv")) != -1)
+	while ((ch = getopt(argc, argv, "HTc:f:o:rvh")) != -1)
 		switch (ch) {
 		case 'H':
 			conform = 0;
@@ -957,13 +956,16 @@ main(int argc, char *argv[])
 		case 'v':
 			verbose = 1;
 			break;
+		case 'h':
+			usage(1);
+			break;
 		default:
-			usage();
+			usage(0);
 		}
 	argc -= optind;
 	argv += optind;
 	if (argc > 1)
-		usage();
+		usage(0);
 	if ((format == TRIANGLE) != (outbase != NULL))
 		die(2, format == TRIANGLE ? "-f triangle needs -o basename" :
 		    "-o is for -f triangle only");

@@ -54,11 +54,10 @@ static struct walk {
 } walk;
 
 static void
-usage(void)
+usage(int help)
 {
-	fprintf(stderr, "usage: qtsplit [-v] [-L ring=level] [-l level] "
+	usageexit(help, "usage: qtsplit [-hv] [-L ring=level] [-l level] "
 	    "[-m level] [-r path] [-s level | -t level] [file]\n");
-	exit(2);
 }
 
 static void
@@ -303,7 +302,7 @@ main(int argc, char *argv[])
 	int ch, inside, level;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "L:l:m:r:s:t:v")) != -1)
+	while ((ch = getopt(argc, argv, "L:l:m:r:s:t:vh")) != -1)
 		switch (ch) {
 		case 'L':
 			addringlevel(optarg);
@@ -321,7 +320,7 @@ main(int argc, char *argv[])
 			else if (ch == 'm')
 				opt.minlevel = val;
 			else if (opt.cutopt != 0 && opt.cutopt != ch)
-				usage();
+				usage(0);
 			else {
 				opt.cut = val;
 				opt.cutopt = ch;
@@ -333,13 +332,16 @@ main(int argc, char *argv[])
 		case 'v':
 			opt.verbose = 1;
 			break;
+		case 'h':
+			usage(1);
+			break;
 		default:
-			usage();
+			usage(0);
 		}
 	argc -= optind;
 	argv += optind;
 	if (argc > 1)
-		usage();
+		usage(0);
 
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    QT_NEEDUNIVERSE);

@@ -93,10 +93,9 @@ static struct mesh {
 } mesh;
 
 static void
-usage(void)
+usage(int help)
 {
-	fprintf(stderr, "usage: qtstats [-lv] [file]\n");
-	exit(2);
+	usageexit(help, "usage: qtstats [-hlv] [file]\n");
 }
 
 static void
@@ -895,7 +894,7 @@ main(int argc, char *argv[])
 	int ch, table = 0, verbose = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "lv")) != -1)
+	while ((ch = getopt(argc, argv, "lvh")) != -1)
 		switch (ch) {
 		case 'l':
 			table = 1;
@@ -903,13 +902,16 @@ main(int argc, char *argv[])
 		case 'v':
 			verbose = 1;
 			break;
+		case 'h':
+			usage(1);
+			break;
 		default:
-			usage();
+			usage(0);
 		}
 	argc -= optind;
 	argv += optind;
 	if (argc > 1)
-		usage();
+		usage(0);
 
 	mo_init(&poly.region);
 	mo_init(&poly.ring);

@@ -36,11 +36,10 @@ static const struct format formats[] = {
 #define NFORMATS	(sizeof(formats) / sizeof(formats[0]))
 
 static void
-usage(void)
+usage(int help)
 {
-	fprintf(stderr, "usage: polyread [-v] [-F feature] [-f format] "
+	usageexit(help, "usage: polyread [-hv] [-F feature] [-f format] "
 	    "[-l level] [-u x0,y0,size] [file ...]\n");
-	exit(2);
 }
 
 static const struct format *
@@ -173,7 +172,7 @@ main(int argc, char *argv[])
 	int ch, i, haveoptu = 0, choosing = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "F:f:l:u:v")) != -1)
+	while ((ch = getopt(argc, argv, "F:f:l:u:vh")) != -1)
 		switch (ch) {
 		case 'F':
 			choosefeature(optarg);
@@ -195,8 +194,11 @@ main(int argc, char *argv[])
 		case 'v':
 			verbose = 1;
 			break;
+		case 'h':
+			usage(1);
+			break;
 		default:
-			usage();
+			usage(0);
 		}
 	argc -= optind;
 	argv += optind;
