@@ -379,3 +379,22 @@ print(*sorted(cls), *sorted(lev))'
 	qtmesh tree.qt > a
 	qtleaves tree.qt | qtmesh | diff -u a -
 }
+
+@test "the whole pipeline through qtbalance meshes every sample and real polygon conforming" {
+	# qtsplit | qtbalance | qtmesh, as README's FE-mesh section runs it;
+	# meshcheck.awk checks conformity, areas and boundary on its own
+	set -- "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt "$SAMPLES"/*.poly
+	[ -d "$SHARED" ] && set -- "$@" "$SHARED"/countries/*.xy "$SHARED"/lakes/*.xy
+	for f in "$@"; do
+		for l in 4 7; do
+			polyread "$f" | qtsplit -l $l -L holes=$((l + 2)) | qtbalance > tree.qt
+			for o in "" "-T -r"; do
+				qtmesh $o tree.qt > mesh.qt
+				awk -f "$TOP/tests/meshcheck.awk" mesh.qt > check ||
+					{ echo "$f $l $o:"; cat check; return 1; }
+				[ "$(qtstats mesh.qt | awk '$1 == "hanging_vertices" { print $2 }')" = 0 ]
+			done
+		done
+	done
+	[ -d "$SHARED" ] || skip "../shared/data is absent: the samples alone were meshed"
+}
