@@ -1334,11 +1334,8 @@ main(int argc, char *argv[])
 		case 'w':
 			opt.width = pixels(ch, optarg, 1);
 			break;
-		case 'h':
-			usage(1);
-			break;
 		default:
-			usage(0);
+			usage(ch == 'h');
 		}
 	argc -= optind;
 	argv += optind;

@@ -432,11 +432,8 @@ main(int argc, char *argv[])
 		case 'v':
 			opt.verbose = 1;
 			break;
-		case 'h':
-			usage(1);
-			break;
 		default:
-			usage(0);
+			usage(ch == 'h');
 		}
 	argc -= optind;
 	argv += optind;

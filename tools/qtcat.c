@@ -536,11 +536,8 @@ main(int argc, char *argv[])
 		case 'u':
 			unsealed = 1;
 			break;
-		case 'h':
-			usage(1);
-			break;
 		default:
-			usage(0);
+			usage(ch == 'h');
 		}
 	argc -= optind;
 	argv += optind;

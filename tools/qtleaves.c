@@ -162,11 +162,8 @@ main(int argc, char *argv[])
 		case 'v':
 			verbose = 1;
 			break;
-		case 'h':
-			usage(1);
-			break;
 		default:
-			usage(0);
+			usage(ch == 'h');
 		}
 	argc -= optind;
 	argv += optind;
