@@ -143,8 +143,9 @@ start_sshd() {
 		done
 		stop_sshd
 	done
-	cat "$d/sshd.log" >&2
-	return 1
+	# a machine whose sshd cannot run for this user is not a failure of
+	# the recipe: say so and why
+	skip "sshd would not start here: $(tail -n 1 "$d/sshd.log" 2>/dev/null)"
 }
 
 stop_sshd() {
