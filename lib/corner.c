@@ -30,7 +30,11 @@ struct corners {
 	size_t		 npt, ptcap;
 };
 
-/* Is (ax, ay) before (bx, by) in Z order, y the higher bit of a digit? */
+/*
+ * Is (ax, ay) before (bx, by) in Z order, y the higher bit of a digit?
+ * cellcmp at one level, written out: it runs for every live point at
+ * every prune, and the call costs 3 % of qtleaves -n.
+ */
 static int
 zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
 {

@@ -15,7 +15,6 @@
  * its four vertex numbers and per vertex its grid point, because all
  * vertex records precede the elements.
  */
-#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,7 +23,6 @@
 
 #include "qtree.h"
 
-#define GRID	QT_MAXLEVEL
 
 static void
 usage(int help)
@@ -47,7 +45,7 @@ static struct mesh {
 static void
 meshleaf(const struct cell *c, int kept)
 {
-	int shift = GRID - c->level;
+	int shift = QT_GRID - c->level;
 	uint64_t x = c->ix << shift, y = c->iy << shift;
 	uint64_t s = (uint64_t)1 << shift;
 
@@ -77,7 +75,7 @@ writemesh(void)
 
 	for (i = 1; i <= corners_count(mesh.corners); i++) {
 		corners_point(mesh.corners, i, &x, &y);
-		qt_gridvertex(i, GRID, x, y);
+		qt_gridvertex(i, QT_GRID, x, y);
 	}
 	for (i = 0; i < mesh.nelem; i++) {
 		for (k = 0; k < 4; k++)

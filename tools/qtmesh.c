@@ -25,7 +25,6 @@
 
 #include "qtree.h"
 
-#define GRID	QT_MAXLEVEL
 
 enum { S, E, N, W };	/* sides, counter-clockwise from the south */
 enum { QTREE, MSH, VTK, TRIANGLE };
@@ -173,7 +172,7 @@ cellpath(char *path, int level, uint64_t ix, uint64_t iy)
 static struct {
 	uint64_t	x, y;
 	int		ok;
-} lastanc[GRID + 1];
+} lastanc[QT_GRID + 1];
 
 static void
 addleaf(const struct qtrec *rec)
@@ -227,7 +226,7 @@ touches(int level, uint64_t x, uint64_t y, int k)
 
 	if (c != 0)
 		return c > 0;
-	for (h = 0; h < 2 && level < GRID; h++)
+	for (h = 0; h < 2 && level < QT_GRID; h++)
 		if (touches(level + 1, 2 * x + kidx[k][h], 2 * y + kidy[k][h],
 		    k))
 			return 1;
@@ -237,7 +236,7 @@ touches(int level, uint64_t x, uint64_t y, int k)
 static void
 unbalanced(const struct leaf *l, int k)
 {
-	char path[GRID + 2];
+	char path[QT_GRID + 2];
 
 	errat(inname, l->lineno, "leaf %s: kept leaves two or more levels "
 	    "finer touch its %s side: the tree is not 2:1 balanced "
@@ -360,7 +359,7 @@ vertex(uint64_t x, uint64_t y)
 static void
 leafpoints(const struct leaf *l, uint64_t px[8], uint64_t py[8])
 {
-	int shift = GRID - l->level;	/* at level G no midpoint hangs */
+	int shift = QT_GRID - l->level;	/* at level G no midpoint hangs */
 	uint64_t s = UINT64_C(1) << shift, x = l->ix << shift,
 	    y = l->iy << shift;
 
@@ -678,7 +677,7 @@ inverse(size_t nv)
 static double
 gridcoord(int axis, uint64_t i)
 {
-	return cellcoord(axis ? u.y0 : u.x0, u.size, GRID, i);
+	return cellcoord(axis ? u.y0 : u.x0, u.size, QT_GRID, i);
 }
 
 /* One line of numbers: integers, then reals, into fp. */
@@ -724,7 +723,7 @@ classtag(int class)
 static void
 writeqtree(size_t nv, const uint32_t *inv)
 {
-	char path[GRID + 2];
+	char path[QT_GRID + 2];
 	unsigned long long v[4], first = 1;
 	struct cell c;
 	uint64_t x, y;
@@ -746,7 +745,7 @@ writeqtree(size_t nv, const uint32_t *inv)
 	}
 	for (i = 0; i < nv; i++) {
 		corners_point(vt, inv[i], &x, &y);
-		qt_gridvertex(i + 1, GRID, x, y);
+		qt_gridvertex(i + 1, QT_GRID, x, y);
 	}
 	for (i = 0; i < nelems; i++) {
 		for (k = 0; k < nverts(&elems[i]); k++)

@@ -12,7 +12,6 @@
 
 #include "qtree.h"
 
-#define GRID		QT_MAXLEVEL	/* side lengths are measured on this grid */
 
 enum { F, E, P };
 
@@ -192,11 +191,11 @@ oneentry(struct subtree *t, unsigned char v)
 	}
 }
 
-/* The length of a side's entry, on the level-GRID grid. */
+/* The length of a side's entry, on the level-QT_GRID grid. */
 static uint64_t
 stretch(unsigned char v)
 {
-	return (uint64_t)1 << (GRID - (v & ~GAP));
+	return (uint64_t)1 << (QT_GRID - (v & ~GAP));
 }
 
 /* Two facing sides of the same length, walked together. */
