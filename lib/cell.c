@@ -35,6 +35,27 @@ pathcell(const char *path, int level, uint64_t *ix, uint64_t *iy)
 	return path[level] == '\0' ? 0 : -1;
 }
 
+/* Where the 8 bytes that memcpy loaded into x and y first differ. */
+static inline int
+firstdiff(uint64_t x, uint64_t y)
+{
+	int i;
+
+#if defined(__GNUC__) && defined(__BYTE_ORDER__) && \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+	return __builtin_ctzll(x ^ y) / 8;
+#endif
+	for (i = 0; i < 8; i++) {
+		unsigned char bx, by;
+
+		memcpy(&bx, (const char *)&x + i, 1);
+		memcpy(&by, (const char *)&y + i, 1);
+		if (bx != by)
+			break;
+	}
+	return i;
+}
+
 /*
  * The length of the longest common prefix of a and b, of at most na and nb
  * bytes: paths, which in preorder mostly share all but their last digit or
@@ -50,14 +71,13 @@ pathprefix(const char *a, int na, const char *b, int nb)
 		memcpy(&x, a + k, 8);
 		memcpy(&y, b + k, 8);
 		if (x != y)
-			break;
+			return k + firstdiff(x, y);
 		k += 8;
 	}
-	if (k < n && k + 8 > n && n >= 8) {	/* no mismatch so far */
+	if (k < n && n >= 8) {	/* no mismatch so far */
 		memcpy(&x, a + n - 8, 8);	/* overlaps the last word */
 		memcpy(&y, b + n - 8, 8);
-		if (x == y)
-			return n;
+		return x == y ? n : n - 8 + firstdiff(x, y);
 	}
 	while (k < n && a[k] == b[k])
 		k++;

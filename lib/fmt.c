@@ -453,28 +453,72 @@ fmtreal(char *buf, double v)
 	return layout(buf, (int)(bits >> 63), m, k);
 }
 
-/* Writes v in decimal, two digits a step; returns the terminating NUL. */
+/* The number of digits of u < 10^8. */
+static inline int
+digits8(uint32_t u)
+{
+#if defined(__GNUC__)
+	/* from the bit length: log10 2 is about 1233 / 4096 */
+	static const uint32_t pow10[] = {
+		1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000
+	};
+	int n = (32 - __builtin_clz(u | 1)) * 1233 >> 12;
+
+	return n + 1 - ((u | 1) < pow10[n]);
+#else
+	return 1 + (u >= 10) + (u >= 100) + (u >= 1000) + (u >= 10000) +
+	    (u >= 100000) + (u >= 1000000) + (u >= 10000000);
+#endif
+}
+
+/* The digits of u < 10^8 ending at end, two a step. */
+static inline void
+putback(char *end, uint32_t u)
+{
+	while (u >= 100) {
+		end -= 2;
+		memcpy(end, pairs + 2 * (u % 100), 2);
+		u /= 100;
+	}
+	if (u >= 10)
+		memcpy(end - 2, pairs + 2 * u, 2);
+	else
+		end[-1] = '0' + (char)u;
+}
+
+/*
+ * Writes v in decimal, its length counted first so that the digits land
+ * in place from the last one back; returns the terminating NUL.  Mesh
+ * and element numbers stay below 10^8, in 32-bit arithmetic.
+ */
 char *
 fmtint(char *buf, long long v)
 {
-	char tmp[24], *t = tmp + sizeof(tmp);
-	unsigned long long u = v < 0 ? -(unsigned long long)v : (unsigned long long)v;
-	size_t n;
+	unsigned long long u = v < 0 ? -(unsigned long long)v :
+	    (unsigned long long)v;
+	char *end;
+	int n;
 
-	while (u >= 100) {
-		t -= 2;
-		memcpy(t, pairs + 2 * (u % 100), 2);
-		u /= 100;
-	}
-	if (u >= 10) {
-		t -= 2;
-		memcpy(t, pairs + 2 * u, 2);
-	} else
-		*--t = '0' + (char)u;
 	if (v < 0)
 		*buf++ = '-';
-	n = tmp + sizeof(tmp) - t;
-	memcpy(buf, t, n);
-	buf[n] = '\0';
-	return buf + n;
+	if (u < 100000000) {
+		end = buf + digits8((uint32_t)u);
+		putback(end, (uint32_t)u);
+	} else {
+		/* the low eight digits, then the rest: at most 12 more */
+		unsigned long long hi = u / 100000000;
+
+		n = hi < 100000000 ? digits8((uint32_t)hi) :
+		    8 + digits8((uint32_t)(hi / 100000000));
+		end = buf + n + 8;
+		put8(end - 8, (uint32_t)(u % 100000000));
+		if (hi < 100000000)
+			putback(end - 8, (uint32_t)hi);
+		else {
+			put8(end - 16, (uint32_t)(hi % 100000000));
+			putback(end - 16, (uint32_t)(hi / 100000000));
+		}
+	}
+	*end = '\0';
+	return end;
 }

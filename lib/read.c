@@ -42,6 +42,7 @@ struct qtreader {
 	int		 deepest;	/* the deepest cell's level, -1 before one */
 	struct universe	 u;
 	struct celltext	 text;
+	char		 tail[192];	/* a cell's fields after its level */
 	/* the last cell: its path, NUL-terminated, and its prefixes' cells */
 	char		 path[QT_MAXLEVEL + 1];
 	int		 pathlen;
@@ -389,56 +390,6 @@ fastpath(struct qtreader *r, const char **pp, const char *end, uint64_t *ix,
 	return j;
 }
 
-/* Whether the n bytes at a are those at b, n < 32; a word at a time. */
-static inline int
-sametext(const char *a, const char *b, size_t n)
-{
-	uint64_t x, y;
-	uint32_t u, v;
-	size_t i;
-
-	if (n >= 8) {
-		for (i = 0; i + 8 < n; i += 8) {
-			memcpy(&x, a + i, 8);
-			memcpy(&y, b + i, 8);
-			if (x != y)
-				return 0;
-		}
-		memcpy(&x, a + n - 8, 8);	/* the last word may overlap */
-		memcpy(&y, b + n - 8, 8);
-		return x == y;
-	}
-	if (n >= 4) {
-		memcpy(&u, a, 4);
-		memcpy(&v, b, 4);
-		if (u != v)
-			return 0;
-		memcpy(&u, a + n - 4, 4);
-		memcpy(&v, b + n - 4, 4);
-		return u == v;
-	}
-	for (i = 0; i < n; i++)
-		if (a[i] != b[i])
-			return 0;
-	return 1;
-}
-
-/*
- * The n bytes of text at p, then a space or, when last, the end of the
- * line: returns what follows, NULL for any other text.
- */
-static inline const char *
-fasttext(const char *p, const char *end, const char *text, size_t n,
-    int last)
-{
-	if ((size_t)(end - p) < n || !sametext(p, text, n))
-		return NULL;
-	p += n;
-	if (last ? p != end : *p != ' ')
-		return NULL;
-	return p + 1;
-}
-
 /* A level as the writers spell it, then a space. */
 static inline const char *
 fastlevel(const char *p, int level)
@@ -481,6 +432,8 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 	const struct coordtext *kx, *ky, *ks;
 	uint64_t ix, iy;
 	int level, common;
+	char *t;
+	size_t n;
 
 	if (memcmp(line, "leaf ", 5) == 0)
 		rec->kind = QT_LEAF;
@@ -495,13 +448,30 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 	kx = celltext(&r->text, level, 0, ix);
 	ky = celltext(&r->text, level, 1, iy);
 	ks = celltext(&r->text, level, 2, 0);
-	if ((p = fastlevel(p, level)) == NULL ||
-	    (p = fasttext(p, end, kx->itext, kx->ilen, 0)) == NULL ||
-	    (p = fasttext(p, end, ky->itext, ky->ilen, 0)) == NULL ||
-	    (p = fasttext(p, end, kx->text, kx->len, 0)) == NULL ||
-	    (p = fasttext(p, end, ky->text, ky->len, 0)) == NULL ||
-	    (p = fasttext(p, end, ks->text, ks->len,
-	    rec->kind == QT_NODE)) == NULL)
+	if ((p = fastlevel(p, level)) == NULL)
+		return 0;
+	/* the rest as the writers would put it, compared at once */
+	t = r->tail;
+	memcpy(t, kx->itext, sizeof(kx->itext));
+	t += kx->ilen;
+	*t++ = ' ';
+	memcpy(t, ky->itext, sizeof(ky->itext));
+	t += ky->ilen;
+	*t++ = ' ';
+	memcpy(t, kx->text, sizeof(kx->text));
+	t += kx->len;
+	*t++ = ' ';
+	memcpy(t, ky->text, sizeof(ky->text));
+	t += ky->len;
+	*t++ = ' ';
+	memcpy(t, ks->text, sizeof(ks->text));
+	t += ks->len;
+	*t = rec->kind == QT_NODE ? '\0' : ' ';
+	n = t - r->tail + (rec->kind == QT_LEAF);
+	if ((size_t)(end - p) < n || memcmp(p, r->tail, n) != 0)
+		return 0;
+	p += n;
+	if (rec->kind == QT_NODE && p != end)
 		return 0;
 	c->class = 0;
 	c->id = 0;

@@ -17,6 +17,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -235,6 +236,48 @@ cellcoords(unsigned long n)
 	}
 }
 
+/* fmtint against printf's %lld. */
+static void
+checkint(long long v)
+{
+	char got[32], want[32];
+
+	fmtint(got, v);
+	snprintf(want, sizeof(want), "%lld", v);
+	if (strcmp(got, want) == 0)
+		passed++;
+	else {
+		failed++;
+		fprintf(stderr, "fmtint %s: got %s\n", want, got);
+	}
+}
+
+/* Both sides of every power of ten, the ends, and random lengths. */
+static void
+integers(unsigned long n)
+{
+	unsigned long done;
+	long long p = 1;
+	int k;
+
+	for (k = 0; k < 19; k++) {
+		checkint(p - 1);
+		checkint(p);
+		checkint(p + 1);
+		checkint(-p);
+		if (k < 18)
+			p *= 10;
+	}
+	checkint(LLONG_MAX);
+	checkint(LLONG_MIN);
+	checkint(LLONG_MIN + 1);
+	for (done = 0; done < n; done++) {
+		long long v = (long long)(rnd() >> rndupto(63));
+
+		checkint(rnd() & 1 ? -v : v);
+	}
+}
+
 static void
 usage(void)
 {
@@ -277,6 +320,7 @@ main(int argc, char *argv[])
 	randombits(n);
 	cellcoords(n);
 	randomdecimals(n);
+	integers(n);
 	printf("fmtcheck: %lu passed, %lu failed\n", passed, failed);
 	return failed != 0;
 }
