@@ -20,6 +20,7 @@
 enum { BEFORE_HEADER, IN_BODY, AFTER_END };
 
 #define NFIELD	64	/* fields of a record, an elem's at most */
+#define MAXLINE	(1 << 20)	/* bytes of a line, its newline excluded */
 
 struct buf {
 	char	*s;
@@ -34,6 +35,7 @@ struct qtreader {
 	char		*buf;
 	size_t		 cap, pos, end;	/* unread input: buf[pos..end-1] */
 	int		 eof;
+	int		 nonewline;	/* the last line read had none */
 	int		 state;
 	unsigned long long count;	/* records, for the end record */
 	char		*field[NFIELD];
@@ -774,6 +776,19 @@ body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 }
 
 /*
+ * Lines are bounded so that memory is, whatever arrives: endless zeros
+ * are named as what they most likely are.
+ */
+static void
+toolong(struct qtreader *r, const char *line, size_t n)
+{
+	r->lineno++;	/* the line's own number */
+	if (memchr(line, '\0', n) != NULL)
+		qt_fail(r, "NUL byte in input");
+	qt_fail(r, "line longer than %d bytes", MAXLINE);
+}
+
+/*
  * The next line, without its newline and NUL-terminated, in *len bytes;
  * NULL at the end of the input.  Input comes in large reads, returned as
  * soon as they hold a line, so a pipe streams.
@@ -789,6 +804,8 @@ readline(struct qtreader *r, size_t *len)
 		line = r->buf + r->pos;
 		nl = memchr(line + scanned, '\n', r->end - r->pos - scanned);
 		if (nl != NULL) {
+			if (nl - line > MAXLINE)
+				toolong(r, line, nl - line);
 			*nl = '\0';
 			*len = nl - line;
 			r->pos += *len + 1;
@@ -801,8 +818,11 @@ readline(struct qtreader *r, size_t *len)
 			line[scanned] = '\0';	/* a last line without newline */
 			*len = scanned;
 			r->pos = r->end;
+			r->nonewline = 1;
 			return line;
 		}
+		if (scanned > MAXLINE)
+			toolong(r, line, scanned);
 		if (r->pos > 0) {
 			memmove(r->buf, line, scanned);
 			r->pos = 0;
@@ -822,6 +842,24 @@ readline(struct qtreader *r, size_t *len)
 			r->eof = 1;
 		r->end += n;
 	}
+}
+
+/*
+ * What a line that did not take the fast way may hold that no record
+ * does, named, since the bytes themselves do not show in a message.
+ */
+static void
+checkline(struct qtreader *r, const char *line, size_t n)
+{
+	if (r->nonewline)
+		qt_fail(r, "truncated stream: the last line has no newline");
+	if (strlen(line) != n)
+		qt_fail(r, "NUL byte in input");
+	if (n > 0 && line[n - 1] == '\r')
+		qt_fail(r, "carriage return at end of line (CRLF line ends: "
+		    "remove them with tr -d '\\r')");
+	if (r->lineno == 1 && n >= 3 && memcmp(line, "\xef\xbb\xbf", 3) == 0)
+		qt_fail(r, "UTF-8 byte order mark at the start of the input");
 }
 
 /* At the end of the input: it must have ended the stream. */
@@ -868,8 +906,7 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 				report(r, 0);
 			return rec->kind;
 		}
-		if (strlen(line) != n)
-			qt_fail(r, "NUL byte in line");
+		checkline(r, line, n);
 		if (line[0] == '#')
 			continue;
 		switch (r->state) {
@@ -908,8 +945,7 @@ qt_next(struct qtreader *r)
 			return 0;
 		}
 		r->lineno++;
-		if (strlen(line) != n)
-			qt_fail(r, "NUL byte in line");
+		checkline(r, line, n);
 		if (line[0] != '#')
 			break;
 	}
