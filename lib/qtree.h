@@ -234,6 +234,7 @@ void	 qt_hang(unsigned long long, unsigned long long, unsigned long long);
 void	 qt_echo(const struct qtrec *);
 struct qtrec *qt_keep(const struct qtrec *);
 void	 qt_free(struct qtrec *);
+unsigned long long qt_bytes(void);
 void	 qt_end(void);
 
 /*

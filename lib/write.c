@@ -29,6 +29,7 @@ static struct {
 	char		 buf[1 << 16];
 	size_t		 len;
 	unsigned long long written;	/* records, for the end record */
+	unsigned long long flushed;	/* bytes, for progress reports */
 	struct celltext	 cell;
 	struct gridtext	 grid[2][NTEXT];
 } w;
@@ -38,6 +39,7 @@ flushout(void)
 {
 	if (w.len > 0 && fwrite(w.buf, 1, w.len, stdout) != w.len)
 		die(1, "write error: %s", strerror(errno ? errno : EIO));
+	w.flushed += w.len;
 	w.len = 0;
 }
 
@@ -50,6 +52,7 @@ put(const char *s, size_t n)
 			if (fwrite(s, 1, n, stdout) != n)
 				die(1, "write error: %s",
 				    strerror(errno ? errno : EIO));
+			w.flushed += n;
 			return;
 		}
 	}
@@ -298,6 +301,13 @@ qt_free(struct qtrec *k)
 	if (k != NULL)
 		free((char *)k->line);
 	free(k);
+}
+
+/* Bytes written so far, for progress reports. */
+unsigned long long
+qt_bytes(void)
+{
+	return w.flushed + w.len;
 }
 
 /* The end record is the promise that the stream is whole. */

@@ -46,9 +46,22 @@ static struct input {
 	size_t		 nrings, nothers;
 } in = { .level = -1 };
 
+/*
+ * For -v, before the walk: the cells of the tree down to level limit (to
+ * CENSUSLEVEL, or 8 levels below -r's cell), counted by the same walk
+ * without output.
+ */
+#define CENSUSLEVEL	12
+
+static struct census {
+	int		 on, limit;
+	unsigned long long cells[QT_MAXLEVEL + 1], partial[QT_MAXLEVEL + 1];
+} census;
+
 /* The walk down the tree, in preorder, and what it has written. */
 static struct walk {
 	char		 path[QT_MAXLEVEL + 2];	/* of the cell at hand */
+	int		 root;		/* the level of -r's cell */
 	unsigned long long ncells;
 	int		 deepest;
 } walk;
@@ -67,12 +80,30 @@ keep(struct qtrec ***list, size_t *n, const struct qtrec *rec)
 	(*list)[(*n)++] = qt_keep(rec);
 }
 
+/*
+ * Progress for -v: cells so far and the share of the tree's square that
+ * preorder has passed, the place of the cell at hand in Z order.
+ */
 static void
 report(int force)
 {
-	if (opt.verbose)
-		progress(force, "%llu cells, deepest level %d", walk.ncells,
-		    walk.deepest);
+	double swept = 0, share = 1;
+	int i;
+
+	if (!opt.verbose)
+		return;
+	if (force) {
+		progress(1, "%llu cells, %llu bytes, deepest level %d",
+		    walk.ncells, qt_bytes(), walk.deepest);
+		return;
+	}
+	for (i = walk.root; walk.path[i] != '\0'; i++) {
+		share /= 4;
+		swept += (walk.path[i] - '0') * share;
+	}
+	progress(0, "%llu cells, deepest level %d, %.1f%% of the %s swept",
+	    walk.ncells, walk.deepest, 100 * swept,
+	    walk.root > 0 ? "subtree" : "universe");
 }
 
 /* Writes a cell; class 0 for a node. */
@@ -124,12 +155,17 @@ visit(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
 {
 	int parity[4], q;
 
-	if (!splits(level, n)) {
+	if (census.on) {
+		census.cells[level]++;
+		census.partial[level] += n > 0;
+		if (level == census.limit || !splits(level, n))
+			return;
+	} else if (!splits(level, n)) {
 		emit(level, ix, iy, split_class(n, inside));
 		return;
-	}
-	emit(level, ix, iy, 0);
-	if (level == opt.cut) {
+	} else
+		emit(level, ix, iy, 0);
+	if (level == opt.cut && !census.on) {
 		shardroot(level);
 		return;
 	}
@@ -291,6 +327,50 @@ descend(const char *subtree, uint64_t *ix, uint64_t *iy, size_t *n,
 	return depth;
 }
 
+/*
+ * The size of the output foretold for -v: the tree is counted down a
+ * few levels, and below them the partial cells, which alone are split,
+ * grow level by level as they did from the level above it (twice as many
+ * a level along a smooth boundary, so the output doubles with each level
+ * and grows with the boundary's length).  A cell takes about 68 bytes and
+ * 1.6 more a level (its path and its column and row numbers grow).
+ */
+static void
+foretell(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
+{
+	double cells = 0, bytes = 0, partial, split, growth = 2;
+	int k, last = level + 8 > CENSUSLEVEL ? level + 8 : CENSUSLEVEL;
+
+	if (last > opt.deepest)
+		last = opt.deepest;
+	census.on = 1;
+	census.limit = last;
+	visit(level, ix, iy, n, inside);
+	census.on = 0;
+	for (k = level; k <= last; k++) {
+		cells += census.cells[k];
+		bytes += census.cells[k] * (68 + 1.6 * k);
+	}
+	partial = census.partial[last];
+	if (last > level && census.partial[last - 1] > 0 && partial > 0)
+		growth = partial / census.partial[last - 1];
+	/* below the minimum level every cell splits, not only partial ones */
+	split = last < opt.minlevel ? census.cells[last] : partial;
+	for (k = last + 1; k <= opt.deepest; k++) {
+		cells += 4 * split;
+		bytes += 4 * split * (68 + 1.6 * k);
+		split = k < opt.minlevel ? 4 * split : partial * growth;
+		partial *= growth;
+	}
+	if (last == opt.deepest)
+		progress(1, "%.0f cells, about %.2g bytes, to come", cells,
+		    bytes);
+	else
+		progress(1, "about %.2g cells, %.2g bytes, to come (counted to "
+		    "level %d; partial cells then grow %.2gx a level)", cells,
+		    bytes, last, growth);
+}
+
 int
 main(int argc, char *argv[])
 {
@@ -354,9 +434,12 @@ main(int argc, char *argv[])
 		writehead();
 	n = split_root(in.sp, &inside);
 	level = descend(subtree, &ix, &iy, &n, &inside);
+	walk.root = level;
 	if (opt.cutopt != 0 && opt.cut < level)
 		die(2, "-%c %d is above the cell %s", opt.cutopt, opt.cut,
 		    subtree);
+	if (opt.verbose && opt.cutopt == 0)
+		foretell(level, ix, iy, n, inside);
 	visit(level, ix, iy, n, inside);
 	if (opt.cutopt != 's')
 		qt_end();
