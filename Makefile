@@ -116,7 +116,9 @@ uninstall:
 
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
-	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats
+	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
+	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
+	    tests/fuzz/qt2svg
 	rm -f $(POLYREADOBJ)
 
 .PHONY: all test demo regress bench sanitize fuzz install uninstall clean

@@ -1,10 +1,13 @@
 #!/bin/sh
 # Fuzzes every parser: polyread in each of its formats and the qtree(5)
-# reader, on rings through qtsplit and on cells through qtstats, each built with AFL++ instrumentation and the
-# address and undefined-behaviour sanitizers, for FUZZTIME seconds (default
-# 60) from the seed corpus in tests/fuzz/seeds.  Prints executions, crashes
-# and hangs per target, and fails when anything crashed or hung; the inputs
-# that did are left in tests/fuzz/out/TARGET/default/{crashes,hangs}.
+# reader in every program that reads it (rings through qtsplit, cells
+# through qtstats, qtleaves -n, qtbalance, qtmesh and qtcat, meshes through
+# qt2svg), each built with AFL++ instrumentation and the address and
+# undefined-behaviour sanitizers, for FUZZTIME seconds (default 60), or
+# about FUZZEXECS executions when that is set, from the seed corpus in
+# tests/fuzz/seeds.  Prints executions, crashes and hangs per target, and
+# fails when anything crashed or hung; the inputs that did are left in
+# tests/fuzz/out/TARGET/default/{crashes,hangs}.
 set -eu
 cd "$(dirname "$0")/../.."
 time=${FUZZTIME:-60}
@@ -26,6 +29,11 @@ build() {
 build polyread tools/polyread/*.c
 build qtsplit tools/qtsplit.c
 build qtstats tools/qtstats.c
+build qtleaves tools/qtleaves.c
+build qtbalance tools/qtbalance.c
+build qtmesh tools/qtmesh.c
+build qtcat tools/qtcat.c
+build qt2svg tools/qt2svg.c
 
 # Containers have no CPU governor to check, may refuse CPU binding, and
 # may pipe core dumps elsewhere: none of that matters to a short run.
@@ -36,14 +44,26 @@ export AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES AFL_SKIP_CRASHES
 
 mkdir -p "$out"
 bad=0
-for target in brep xy wkt poly csv geojson qtree cells; do
+if [ -n "${FUZZEXECS:-}" ]; then
+	budget="-E $FUZZEXECS"
+else
+	budget="-V $time"
+fi
+for target in brep xy wkt poly csv geojson qtree cells numbered balance \
+    qtmesh qtcat mesh; do
 	case $target in
 	qtree)	set -- tests/fuzz/qtsplit -l 3 @@ ;;
 	cells)	set -- tests/fuzz/qtstats -l @@ ;;
+	numbered) set -- tests/fuzz/qtleaves -n @@ ;;
+	balance) set -- tests/fuzz/qtbalance -c @@ ;;
+	qtmesh)	set -- tests/fuzz/qtmesh -H @@ ;;
+	qtcat)	set -- tests/fuzz/qtcat @@ tests/fuzz/seeds/qtcat/shard.qt ;;
+	mesh)	set -- tests/fuzz/qt2svg @@ ;;
 	*)	set -- tests/fuzz/polyread -f "$target" @@ ;;
 	esac
 	rm -rf "${out:?}/$target"
-	afl-fuzz -V "$time" -m none -t 2000 -i "tests/fuzz/seeds/$target" \
+	# shellcheck disable=SC2086
+	afl-fuzz $budget -m none -t 2000 -i "tests/fuzz/seeds/$target" \
 	    -o "$out/$target" -- "$@" > "$out/$target.log" 2>&1 || {
 		echo "fuzz: afl-fuzz failed on $target; see $out/$target.log" >&2
 		tail -n 5 "$out/$target.log" >&2
