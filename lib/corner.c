@@ -9,7 +9,7 @@
  * each coordinate).  So once the cell being meshed starts after a point in
  * Z order, that point is never asked for again: the table of live points
  * drops it when it next grows, and stays as small as the front of the
- * sweep.  What is kept for good is each vertex's grid point, 16 bytes.
+ * sweep.  What may be kept for good is each vertex's grid point, 16 bytes.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -26,6 +26,7 @@ struct corners {
 	struct live	*live;	/* open addressing, at most half full */
 	size_t		 cap, n;
 	uint64_t	 atx, aty;	/* the lower left of the current cell */
+	int		 keep;		/* whether pt is kept */
 	uint64_t	(*pt)[2];	/* grid point of vertex i + 1 */
 	size_t		 npt, ptcap;
 };
@@ -96,12 +97,18 @@ rebuild(struct corners *t)
 	free(old);
 }
 
+/*
+ * keeppoints: whether corners_point will be asked, which costs 16 bytes a
+ * vertex; a program that writes each vertex when it is numbered needs
+ * only the live points.
+ */
 struct corners *
-corners_new(void)
+corners_new(int keeppoints)
 {
 	struct corners *t = xmalloc(sizeof(*t));
 
 	memset(t, 0, sizeof(*t));
+	t->keep = keeppoints;
 	rebuild(t);
 	return t;
 }
@@ -139,12 +146,14 @@ corners_id(struct corners *t, uint64_t x, uint64_t y)
 			return t->live[k].id;
 	if (t->npt == UINT32_MAX)
 		die(1, "more than %lu vertices", (unsigned long)UINT32_MAX);
-	if (t->npt == t->ptcap) {
-		t->ptcap = t->ptcap ? 2 * t->ptcap : 1024;
-		t->pt = xreallocarray(t->pt, t->ptcap, sizeof(*t->pt));
+	if (t->keep) {
+		if (t->npt == t->ptcap) {
+			t->ptcap = t->ptcap ? 2 * t->ptcap : 1024;
+			t->pt = xreallocarray(t->pt, t->ptcap, sizeof(*t->pt));
+		}
+		t->pt[t->npt][0] = x;
+		t->pt[t->npt][1] = y;
 	}
-	t->pt[t->npt][0] = x;
-	t->pt[t->npt][1] = y;
 	v.x = x;
 	v.y = y;
 	v.id = ++t->npt;

@@ -103,7 +103,7 @@ int	 cellnext(int, uint64_t, uint64_t, int, int, uint64_t *, uint64_t *);
  * preorder; corners_at says where the current cell starts, which lets the
  * points behind it go.  corners_find gives 0 for a point not numbered.
  */
-struct corners *corners_new(void);
+struct corners *corners_new(int);
 void	 corners_free(struct corners *);
 void	 corners_at(struct corners *, uint64_t, uint64_t);
 uint32_t corners_id(struct corners *, uint64_t, uint64_t);

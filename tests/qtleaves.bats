@@ -24,18 +24,18 @@ amoeba() {
 		v 1 2
 		v 0 2
 		leaf 0 1 0 0 0 0 1 F 1
-		leaf 1 1 1 0 1 0 1 F 2
-		leaf 2 1 0 1 0 1 1 F 3
 		vertex 1 0 0
 		vertex 2 1 0
 		vertex 3 1 1
 		vertex 4 0 1
+		elem 1 quad 1 2 3 4
+		leaf 1 1 1 0 1 0 1 F 2
 		vertex 5 2 0
 		vertex 6 2 1
+		elem 2 quad 2 5 6 3
+		leaf 2 1 0 1 0 1 1 F 3
 		vertex 7 1 2
 		vertex 8 0 2
-		elem 1 quad 1 2 3 4
-		elem 2 quad 2 5 6 3
 		elem 3 quad 4 3 7 8
 		end 23
 		EOF
@@ -210,7 +210,7 @@ amoeba() {
 @test "a stream that already holds a mesh is refused" {
 	polyread "$FIXTURES/invl.xy" | qtsplit -l 1 | qtleaves -n > m.qt
 	run -1 --separate-stderr qtleaves m.qt
-	[ "$stderr" = "qtleaves: m.qt:14: the input already holds a mesh (vertex record): qtleaves reads a tree" ]
+	[ "$stderr" = "qtleaves: m.qt:12: the input already holds a mesh (vertex record): qtleaves reads a tree" ]
 }
 
 @test "leaves out of preorder are refused, by every reader" {
@@ -247,21 +247,22 @@ amoeba() {
 	# and by hand: the three full quadrants of the L, the south-east one
 	# (path 1, x 1..2, y 0..1) removed, numbered 1 2 3; each element's
 	# corners run counter-clockwise from its lower left, a corner numbered
-	# when an element first reaches it
+	# when an element first reaches it and written before that element,
+	# which follows its leaf
 	cat > hand <<-EOF
 	leaf 0 1 0 0 0 0 1 F 1
-	leaf 2 1 0 1 0 1 1 F 2
-	leaf 3 1 1 1 1 1 1 F 3
 	vertex 1 0 0
 	vertex 2 1 0
 	vertex 3 1 1
 	vertex 4 0 1
+	elem 1 quad 1 2 3 4
+	leaf 2 1 0 1 0 1 1 F 2
 	vertex 5 1 2
 	vertex 6 0 2
+	elem 2 quad 4 3 5 6
+	leaf 3 1 1 1 1 1 1 F 3
 	vertex 7 2 1
 	vertex 8 2 2
-	elem 1 quad 1 2 3 4
-	elem 2 quad 4 3 5 6
 	elem 3 quad 3 7 8 5
 	EOF
 	diff -u hand - <<< "$output"
@@ -339,4 +340,17 @@ amoeba() {
 	[ "$stderr" = "qtleaves: -n: a mesh is written in the qtree format only" ]
 	run -2 --separate-stderr qtleaves -f shp cut.qt
 	[ "$stderr" = "qtleaves: -f: unknown format shp (qtree, geojson, wkt)" ]
+}
+
+# 1.5 M records through -n in 15 MB of address space: the mesh is written
+# as the leaves come, so memory holds the front of the sweep only (a mesh
+# kept whole took 37 MB here).
+@test "-n streams: memory bounded by the sweep's front, not by the mesh" {
+	awk -v shape=star -v n=1000 -f "$TOP/tools/genpoly.awk" | polyread |
+	    qtsplit -l 16 > s.qt
+	want=$(awk '$1 == "leaf" && $9 != "E" { n++ } END { print n }' s.qt)
+	run -0 bash -c 'ulimit -v 15000; qtleaves -n s.qt |
+	    awk '\''$1 == "elem" { n++; if ($2 != n) exit 1 } END { print n }'\'
+	[ "$output" = "$want" ]
+	[ "$want" -gt 1000000 ]
 }

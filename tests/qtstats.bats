@@ -224,9 +224,11 @@ value() {
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | qtleaves -n > m.qt
 	want=$(awk '
 	$1 == "vertex" { n++; vx[n] = $3 + 0; vy[n] = $4 + 0 }
-	$1 == "elem" {
+	$1 == "elem" { for (i = 4; i <= 7; i++) ev[$2, i] = $i; ne = $2 }
+	END {
+		for (e = 1; e <= ne; e++)
 		for (i = 4; i <= 7; i++) {
-			a = $i; b = $(i == 7 ? 4 : i + 1)
+			a = ev[e, i]; b = ev[e, i == 7 ? 4 : i + 1]
 			for (v = 1; v <= n; v++) {
 				if (vx[a] == vx[b] && vx[v] == vx[a] &&
 				    (vy[v] - vy[a]) * (vy[v] - vy[b]) < 0) h[v]
@@ -234,8 +236,9 @@ value() {
 				    (vx[v] - vx[a]) * (vx[v] - vx[b]) < 0) h[v]
 			}
 		}
-	}
-	END { for (v in h) c++; print c + 0 }' m.qt)
+		for (v in h) c++
+		print c + 0
+	}' m.qt)
 	qtstats m.qt > s
 	[ "$(value hanging_vertices s)" = "$want" ]
 	[ "$want" -gt 0 ]

@@ -11,9 +11,9 @@
  * same exact product.
  *
  * lib/corner.c numbers them in order of first use, keeping only the
- * corners that later leaves can still reach; what remains per element is
- * its four vertex numbers and per vertex its grid point, because all
- * vertex records precede the elements.
+ * corners that later leaves can still reach, and each element is written
+ * after its leaf, its new vertices first: memory is bounded by the front
+ * of the sweep, not by the mesh.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -31,57 +31,34 @@ usage(int help)
 	    "[file]\n");
 }
 
-/* The mesh to write once the stream is read. */
-static struct mesh {
-	struct corners	*corners;	/* the vertices */
-	uint32_t	(*elem)[4];	/* vertex numbers of each element */
-	size_t		 nelem, elemcap;
-} mesh;
+static struct corners *corners;	/* the vertices, with -n */
 
 /*
  * Every leaf passes here with -n, kept or not, to move the Z order
- * position on; the reader has checked that cells come in preorder.
+ * position on; the reader has checked that cells come in preorder.  A
+ * kept leaf's element follows it, after the vertices it numbers first.
  */
 static void
-meshleaf(const struct cell *c, int kept)
+meshleaf(const struct cell *c, int kept, unsigned long long id)
 {
-	int shift = QT_GRID - c->level;
+	int shift = QT_GRID - c->level, k;
 	uint64_t x = c->ix << shift, y = c->iy << shift;
 	uint64_t s = (uint64_t)1 << shift;
+	/* counter-clockwise from the lower left */
+	uint64_t px[4] = { x, x + s, x + s, x }, py[4] = { y, y, y + s, y + s };
+	unsigned long long v[4];
 
-	corners_at(mesh.corners, x, y);
+	corners_at(corners, x, y);
 	if (!kept)
 		return;
-	if (mesh.nelem == mesh.elemcap) {
-		mesh.elemcap = mesh.elemcap ? 2 * mesh.elemcap : 1024;
-		mesh.elem = xreallocarray(mesh.elem, mesh.elemcap,
-		    sizeof(*mesh.elem));
-	}
-	/* counter-clockwise from the lower left */
-	mesh.elem[mesh.nelem][0] = corners_id(mesh.corners, x, y);
-	mesh.elem[mesh.nelem][1] = corners_id(mesh.corners, x + s, y);
-	mesh.elem[mesh.nelem][2] = corners_id(mesh.corners, x + s, y + s);
-	mesh.elem[mesh.nelem][3] = corners_id(mesh.corners, x, y + s);
-	mesh.nelem++;
-}
+	for (k = 0; k < 4; k++) {
+		size_t before = corners_count(corners);
 
-static void
-writemesh(void)
-{
-	unsigned long long v[4];
-	uint64_t x, y;
-	size_t i;
-	int k;
-
-	for (i = 1; i <= corners_count(mesh.corners); i++) {
-		corners_point(mesh.corners, i, &x, &y);
-		qt_gridvertex(i, QT_GRID, x, y);
+		v[k] = corners_id(corners, px[k], py[k]);
+		if (corners_count(corners) > before)
+			qt_gridvertex(v[k], QT_GRID, px[k], py[k]);
 	}
-	for (i = 0; i < mesh.nelem; i++) {
-		for (k = 0; k < 4; k++)
-			v[k] = mesh.elem[i][k];
-		qt_elem(i + 1, "quad", 4, v);
-	}
+	qt_elem(id, "quad", 4, v);
 }
 
 enum format { QTREE, GEOJSON, WKT };
@@ -170,7 +147,7 @@ main(int argc, char *argv[])
 	if (nflag && format != QTREE)
 		die(2, "-n: a mesh is written in the qtree format only");
 	if (nflag)
-		mesh.corners = corners_new();
+		corners = corners_new(0);
 
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    verbose ? QT_VERBOSE : 0);
@@ -203,7 +180,7 @@ main(int argc, char *argv[])
 			else if (kept)
 				putgis(format, &u, &rec.c, ++id);
 			if (nflag)
-				meshleaf(&rec.c, kept);
+				meshleaf(&rec.c, kept, id);
 			break;
 		case QT_VERTEX:
 		case QT_ELEM:
@@ -217,8 +194,6 @@ main(int argc, char *argv[])
 		}
 	}
 	qt_close(r);
-	if (nflag)
-		writemesh();
 	if (format == QTREE)
 		qt_end();
 	else if (format == GEOJSON)

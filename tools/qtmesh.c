@@ -1017,7 +1017,7 @@ main(int argc, char *argv[])
 	for (i = 0; i < nleaves; i++)
 		sides(i);
 	cellset_free(set);
-	vt = corners_new();
+	vt = corners_new(1);
 	for (i = 0; i < nleaves; i++)
 		meshleaf(&leaves[i]);
 	resolve();
