@@ -98,6 +98,11 @@ regress: all
 bench: all
 	sh tools/bench.sh
 
+# qtree against p4est and CGAL, each when installed: counts checked, one
+# table of seconds (tools/benchpeers.sh).
+bench-peers: all
+	sh tools/benchpeers.sh
+
 # Each parser under AFL++ for FUZZTIME seconds (default 60).
 fuzz:
 	sh tests/fuzz/run.sh
@@ -119,4 +124,5 @@ clean:
 	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats
 	rm -f $(POLYREADOBJ)
 
-.PHONY: all test demo regress bench sanitize fuzz install uninstall clean
+.PHONY: all test demo regress bench bench-peers sanitize fuzz install uninstall \
+	clean
