@@ -238,9 +238,8 @@ bench() {
 	qt=$tmp/$(echo "$1" | tr -c 'a-z0-9\n' _).qt
 	./polyread "$2" >"$qt" || die "polyread rejects $2"
 	agree "$1" "$qt" "$3"
-	echo "$1: $(counts "$qt" "$3" | awk '{ printf "%s%s %s", \
-	    NR > 1 ? ", " : "", substr($1, 8), $2 }') leaves" \
-	    >>"$tmp/leaves"
+	awk -v name="$1" '{ s = s (NR > 1 ? ", " : "") substr($1, 8) " " $2 }
+	    END { print name ": " s }' "$tmp/want" >>"$tmp/leaves"
 	# a failure in $(...) ends only that subshell: an empty figure says so
 	tq=$(pipeline "./polyread $2 | ./qtsplit -l $3") && [ -n "$tq" ] &&
 	    tp=$(peer "$p4est" "$qt" "$3") && [ -n "$tp" ] &&

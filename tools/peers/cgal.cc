@@ -23,8 +23,6 @@
  * the edges could not go down the tree with it.
  */
 #include <stdint.h>
-#include <stdio.h>
-#include <stdlib.h>
 
 #include <cmath>
 #include <vector>
