@@ -21,13 +21,14 @@
 # leaves by class of each harness must equal qtsplit's (qtstats'
 # leaves_F, leaves_E, leaves_P), or the script stops there.
 #
-# Seconds are medians of BENCH_RUNS runs (default 5).  qtree's are the
-# whole pipeline `polyread FILE | qtsplit -l LEVEL > /dev/null`, parsing
-# and writing every cell included, timed by hyperfine(1) when installed
-# (Debian: hyperfine), else by the script; a peer's are its decomposition
-# alone, the polygon already read and nothing written, by its harness's
-# clock (clock_gettime).  A ratio peer/qtree above 1: the peer is slower.
-# The machine may be busy: take ratios from one run.
+# Seconds are medians of BENCH_RUNS runs (default 5), the programs taking
+# turns, a run each in a round.  qtree's are the whole pipeline `polyread
+# FILE | qtsplit -l LEVEL > /dev/null`, parsing and writing every cell
+# included, timed by hyperfine(1) when installed (Debian: hyperfine), else
+# by the script; a peer's are its decomposition alone, the polygon already
+# read and nothing written, by its harness's clock (clock_gettime).  A
+# ratio peer/qtree above 1: the peer is slower.  The machine may be busy:
+# take ratios from one run.
 #
 # -c: build the harnesses of the peers named (default both) and check
 # their counts against qtsplit's on every sample and fixture at levels 1,
@@ -194,45 +195,36 @@ median() {
 		  else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
 
-# pipeline CMD: the median seconds of the shell pipeline CMD, its output
-# thrown away; hyperfine runs it in one sh without its shell correction,
-# as tools/bench.sh does.
+# pipeline CMD: one run of the shell pipeline CMD, its output thrown
+# away; its seconds go to $tmp/tq.  hyperfine runs it in one sh without
+# its shell correction, as tools/bench.sh does.
 pipeline() {
 	if [ $timer = hyperfine ]; then
-		hyperfine -N --runs "$runs" --style none --output null \
+		hyperfine -N --runs 1 --style none --output null \
 		    --export-csv "$tmp/h.csv" -- "sh -c '$1 > /dev/null'" \
 		    >/dev/null 2>"$tmp/h.err" ||
 			{ cat "$tmp/h.err" >&2; die "failed: $1"; }
-		awk -F, 'NR == 2 { print $(NF - 4) }' "$tmp/h.csv"
+		awk -F, 'NR == 2 { print $(NF - 4) }' "$tmp/h.csv" >>"$tmp/tq"
 		return
 	fi
-	: >"$tmp/t"
-	i=0
-	while [ $i -lt "$runs" ]; do
-		t0=$(date +%s.%N)
-		sh -c "$1 > /dev/null" || die "failed: $1"
-		awk -v a="$t0" -v b="$(date +%s.%N)" \
-		    'BEGIN { printf "%.6f\n", b - a }' >>"$tmp/t"
-		i=$((i + 1))
-	done
-	median <"$tmp/t"
+	t0=$(date +%s.%N)
+	sh -c "$1 > /dev/null" || die "failed: $1"
+	awk -v a="$t0" -v b="$(date +%s.%N)" \
+	    'BEGIN { printf "%.6f\n", b - a }' >>"$tmp/tq"
 }
 
-# peer HARNESS QT LEVEL: the median of its own seconds, or - without it.
+# peer HARNESS QT LEVEL FILE: one run of the harness, if built; the
+# seconds it reports go to FILE.
 peer() {
-	[ -n "$1" ] || { echo -; return; }
-	: >"$tmp/t"
-	i=0
-	while [ $i -lt "$runs" ]; do
-		"$1" -l "$3" "$2" >"$tmp/out" ||
-			die "$(basename "$1") -l $3 failed on $2"
-		awk '$1 == "seconds" { print $2 }' "$tmp/out" >>"$tmp/t"
-		i=$((i + 1))
-	done
-	median <"$tmp/t"
+	[ -n "$1" ] || return 0
+	"$1" -l "$3" "$2" >"$tmp/out" ||
+		die "$(basename "$1") -l $3 failed on $2"
+	awk '$1 == "seconds" { print $2 }' "$tmp/out" >>"$4"
 }
 
-# bench NAME INPUT LEVEL: one row; INPUT is the file polyread reads.
+# bench NAME INPUT LEVEL: one row; INPUT is the file polyread reads.  The
+# programs take turns, a run each in a round, so that a change in the
+# machine's load falls on all of them alike.
 form='%-15s %9s %9s %9s %12s %11s\n'
 bench() {
 	qt=$tmp/$(echo "$1" | tr -c 'a-z0-9\n' _).qt
@@ -240,24 +232,40 @@ bench() {
 	agree "$1" "$qt" "$3"
 	awk -v name="$1" '{ s = s (NR > 1 ? ", " : "") substr($1, 8) " " $2 }
 	    END { print name ": " s }' "$tmp/want" >>"$tmp/leaves"
-	# a failure in $(...) ends only that subshell: an empty figure says so
-	tq=$(pipeline "./polyread $2 | ./qtsplit -l $3") && [ -n "$tq" ] &&
-	    tp=$(peer "$p4est" "$qt" "$3") && [ -n "$tp" ] &&
-	    tc=$(peer "$cgal" "$qt" "$3") && [ -n "$tc" ] || exit 1
-	awk -v form="$form" -v name="$1" -v q="$tq" -v p="$tp" -v c="$tc" '
+	: >"$tmp/tq"
+	: >"$tmp/tp"
+	: >"$tmp/tc"
+	i=0
+	while [ $i -lt "$runs" ]; do
+		pipeline "./polyread $2 | ./qtsplit -l $3"
+		peer "$p4est" "$qt" "$3" "$tmp/tp"
+		peer "$cgal" "$qt" "$3" "$tmp/tc"
+		i=$((i + 1))
+	done
+	for f in tq tp tc; do
+		if [ -s "$tmp/$f" ]; then
+			median <"$tmp/$f"
+		else
+			echo -
+		fi
+	done | awk -v form="$form" -v name="$1" '
 	function sec(s) { return s == "-" ? s : sprintf("%.4f", s) }
-	function ratio(s) { return s == "-" ? s : sprintf("%.2f", s / q) }
-	BEGIN { printf form, name, sec(q), sec(p), sec(c), ratio(p), ratio(c) }'
+	function ratio(s) { return s == "-" ? s : sprintf("%.2f", s / t[1]) }
+	{ t[NR] = $1 }
+	END { printf form, name, sec(t[1]), sec(t[2]), sec(t[3]), ratio(t[2]),
+	    ratio(t[3]) }'
 }
 
 cpu=$(awk -F': *' '/^model name/ { print $2; exit }' /proc/cpuinfo \
     2>/dev/null)
+load=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null)
 echo "# qtree against its peers, $(date -u '+%Y-%m-%d %H:%M UTC')," \
     "$(uname -m), $(nproc 2>/dev/null ||
-    getconf _NPROCESSORS_ONLN) CPUs, ${cpu:-unknown CPU}"
+    getconf _NPROCESSORS_ONLN) CPUs, ${cpu:-unknown CPU}," \
+    "load average ${load:-unknown}"
 echo "# qtree: the pipeline polyread | qtsplit > /dev/null, by $timer;" \
     "p4est ${p4ver:--}, CGAL ${cgalver:--}: the decomposition alone, by" \
-    "its harness's clock; seconds, medians of $runs runs"
+    "its harness's clock; seconds, medians of $runs runs taken in turns"
 : >"$tmp/leaves"
 {
 	# shellcheck disable=SC2059
