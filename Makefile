@@ -98,6 +98,11 @@ regress: all
 bench: all
 	sh tools/bench.sh
 
+# qtree against p4est and CGAL, each when installed: counts checked, one
+# table of seconds (tools/benchpeers.sh).
+bench-peers: all
+	sh tools/benchpeers.sh
+
 # Each parser under AFL++ for FUZZTIME seconds (default 60).
 fuzz:
 	sh tests/fuzz/run.sh
@@ -121,4 +126,5 @@ clean:
 	    tests/fuzz/qt2svg
 	rm -f $(POLYREADOBJ)
 
-.PHONY: all test demo regress bench sanitize fuzz install uninstall clean
+.PHONY: all test demo regress bench bench-peers sanitize fuzz install uninstall \
+	clean
