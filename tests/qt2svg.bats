@@ -574,3 +574,55 @@ quarter() {
 	run -1 --separate-stderr bash -c 'qt2svg a.qt > /dev/full'
 	[[ "$stderr" == 'qt2svg: write error'* ]]
 }
+
+# Three unit quads in an L, and the fourth quadrant [1, 2] x [1, 2] meshed
+# by 100 x 100 quads of side 0.01: 0.9 pixels at -w 200 (90 pixels a unit).
+finemesh() {
+	awk 'BEGIN {
+		print "qtree 1"; print "universe 0 0 2"
+		n = 0
+		for (j = 0; j <= 2; j++)
+			for (i = 0; i <= 2; i++)
+				if (!(i == 2 && j == 2))
+					printf "vertex %d %d %d\n", ++n, i, j
+		# ids: (0,0)1 (1,0)2 (2,0)3 (0,1)4 (1,1)5 (2,1)6 (0,2)7 (1,2)8
+		for (j = 0; j <= 100; j++)
+			for (i = 0; i <= 100; i++) {
+				printf "vertex %d %.17g %.17g\n", ++n, 1 + i / 100, 1 + j / 100
+				id[i, j] = n
+			}
+		e = 0
+		printf "elem %d quad 1 2 5 4\n", ++e
+		printf "elem %d quad 2 3 6 5\n", ++e
+		printf "elem %d quad 4 5 8 7\n", ++e
+		for (j = 0; j < 100; j++)
+			for (i = 0; i < 100; i++)
+				printf "elem %d quad %d %d %d %d\n", ++e, id[i, j],
+				    id[i + 1, j], id[i + 1, j + 1], id[i, j + 1]
+		printf "end %d\n", 1 + n + e
+	}' > fine.qt
+}
+
+@test "a mesh finer than the pixels: tiny elements shaded in blocks, the file the size of the picture" {
+	finemesh
+	qt2svg -w 200 -nN fine.qt > fine.svg
+	xmllint --noout fine.svg
+	# the three unit quads outlined, alone
+	[ "$(group elements fine.svg | grep -o z | wc -l)" = 3 ]
+	# their 8 corners as dots and numbers, none of the 10201 others
+	[ "$(group vertices fine.svg | grep -o h0 | wc -l)" = 8 ]
+	[ "$(group vertex-numbers fine.svg | grep -c '<text')" = 8 ]
+	[ "$(group element-numbers fine.svg | grep -c '<text')" = 3 ]
+	# 90 x 90 pixels shaded as 2-pixel blocks: one run a row, 45 or 46
+	# rows depending on where the blocks fall
+	n=$(group fine-elements fine.svg | grep -o z | wc -l)
+	[ "$n" -ge 45 ] && [ "$n" -le 46 ]
+	# 10,000 elements drawn one by one took 560 kB, 1.5 MB with -nN
+	[ "$(wc -c < fine.svg)" -lt 20000 ]
+	if command -v rsvg-convert > /dev/null; then
+		rsvg-convert fine.svg -o fine.png
+		# the middle of the fine quadrant is shaded: darker than white
+		run -0 pixel fine.png 145 55
+		[ "$output" != "#FFFFFF" ]
+	fi
+}

@@ -851,7 +851,27 @@ elembox(const unsigned long long *e, long long b[4], long long c[2])
 	    b[3] >= clipbox[1] && b[1] <= clipbox[3];
 }
 
-/* The smallest side drawn, of an element or the smallest leaf, pixels. */
+/*
+ * Elements under 2 pixels, as leaves are, are not outlined one by one:
+ * the 2-pixel blocks of the map that hold their centres are shaded, so
+ * that the file stays the size of the picture however fine the mesh.
+ * Only the vertices and numbers of the elements outlined are drawn.
+ */
+#define FINE	200	/* hundredths */
+
+static struct {
+	unsigned char	*block;		/* a byte a 2-pixel block of the map */
+	size_t		 w, h;
+	unsigned char	*vdrawn;	/* a bit a vertex: of an outlined one */
+} fine;
+
+static int
+outlined(const long long b[4])
+{
+	return b[2] - b[0] >= FINE && b[3] - b[1] >= FINE;
+}
+
+/* The smallest side drawn, of an outlined element or the smallest leaf. */
 static double
 finest(void)
 {
@@ -861,7 +881,7 @@ finest(void)
 	size_t i;
 
 	for (i = 0; i < pic.nelems; i++, e += 1 + e[0]) {
-		if (!elembox(e, b, c))
+		if (!elembox(e, b, c) || !outlined(b))
 			continue;
 		s = (b[2] - b[0] < b[3] - b[1] ? b[2] - b[0] : b[3] - b[1]) /
 		    100.0;
@@ -888,6 +908,62 @@ strokelayer(struct layer *ly, char head[256], const char *id, double width,
 	ly->attrs = "";
 }
 
+static void
+markfine(const long long c[2])
+{
+	long long bx = (c[0] - box[0]) / FINE, by = (c[1] - box[1]) / FINE;
+
+	if (fine.block == NULL) {
+		fine.w = (size_t)((box[2] - box[0]) / FINE + 1);
+		fine.h = (size_t)((box[3] - box[1]) / FINE + 1);
+		fine.block = xreallocarray(NULL, fine.w, fine.h);
+		memset(fine.block, 0, fine.w * fine.h);
+	}
+	if (bx >= 0 && by >= 0 && (size_t)bx < fine.w && (size_t)by < fine.h)
+		fine.block[(size_t)by * fine.w + (size_t)bx] = 1;
+}
+
+static int
+vertexdrawn(size_t id)
+{
+	return fine.vdrawn[(id - 1) / 8] >> ((id - 1) % 8) & 1;
+}
+
+/* The shaded blocks, a rectangle a run along each row. */
+static void
+fineblocks(void)
+{
+	struct layer ly = { 0 };
+	size_t i, j, e;
+
+	if (fine.block == NULL)
+		return;
+	ly.head = "<g id=\"fine-elements\" fill=\"#000000\" "
+	    "fill-opacity=\"0.35\" shape-rendering=\"crispEdges\">\n";
+	ly.attrs = "";
+	for (j = 0; j < fine.h; j++)
+		for (i = 0; i < fine.w; i = e) {
+			const unsigned char *row = fine.block + j * fine.w;
+
+			for (e = i + 1; e < fine.w && row[e] == row[i]; e++)
+				;
+			if (!row[i])
+				continue;
+			subpath(&ly);
+			out("M", 1);
+			outxy(box[0] + (long long)i * FINE,
+			    box[1] + (long long)j * FINE);
+			out("h", 1);
+			outhund((long long)(e - i) * FINE);
+			out("v", 1);
+			outhund(FINE);
+			out("h", 1);
+			outhund(-(long long)(e - i) * FINE);
+			out("z", 1);
+		}
+	layerend(&ly);
+}
+
 /* Elements use only vertices defined before them. */
 static void
 elements(double f)
@@ -899,20 +975,28 @@ elements(double f)
 	unsigned long long k;
 	size_t i;
 
+	fine.vdrawn = xreallocarray(NULL, pic.nverts / 8 + 1, 1);
+	memset(fine.vdrawn, 0, pic.nverts / 8 + 1);
 	strokelayer(&ly, head, "elements", clamp(f / 8, 0.01, 1),
 	    "stroke-linejoin=\"round\"");
 	for (i = 0; i < pic.nelems; i++, e += 1 + e[0]) {
 		if (!elembox(e, b, c))
 			continue;
+		if (!outlined(b)) {
+			markfine(c);
+			continue;
+		}
 		subpath(&ly);
 		for (k = 0; k < e[0]; k++) {
 			vertexpx(e[1 + k], &x, &y);
 			out(k == 0 ? "M" : " ", 1);
 			outxy(x, y);
+			fine.vdrawn[(e[1 + k] - 1) / 8] |= 1 << (e[1 + k] - 1) % 8;
 		}
 		out("z", 1);
 	}
 	layerend(&ly);
+	fineblocks();
 }
 
 /* A zero-length line with round caps is a dot. */
@@ -928,7 +1012,7 @@ vertices(double f)
 	    "stroke-linecap=\"round\"");
 	for (i = 0; i < pic.nverts; i++) {
 		vertexpx(i + 1, &x, &y);
-		if (outcode(x, y) != 0)
+		if (outcode(x, y) != 0 || !vertexdrawn(i + 1))
 			continue;
 		subpath(&ly);
 		out("M", 1);
@@ -984,7 +1068,7 @@ numbers(double f)
 		outs("<g id=\"element-numbers\" font-family=\"sans-serif\" "
 		    "text-anchor=\"middle\" fill=\"#000000\">\n");
 		for (i = 0; i < pic.nelems; i++, e += 1 + e[0])
-			if (elembox(e, b, c))
+			if (elembox(e, b, c) && outlined(b))
 				label(c[0], c[1], (b[2] - b[0]) / 100.0, i + 1);
 		for (i = 0; pic.nelems == 0 && i < pic.nsq; i++) {
 			const struct square *s = &pic.sq[i];
@@ -1006,7 +1090,7 @@ numbers(double f)
 	/* Above and to the right of the dot, clear of its lines. */
 	for (i = 0; i < pic.nverts; i++) {
 		vertexpx(i + 1, &x, &y);
-		if (outcode(x, y) != 0)
+		if (outcode(x, y) != 0 || !vertexdrawn(i + 1))
 			continue;
 		digits = fmtint(num, (long long)i + 1) - num;
 		w = 6 * fs * digits / 10;
