@@ -56,15 +56,19 @@ tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
 tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
-# fmtbench times it.  genpow5 writes lib/pow5.h, which is committed.
+# fmtbench times it; numcheck checks parsereal against strtod.  genpow5
+# writes lib/pow5.h, which is committed (tests/numcheck.bats compares).
 tests/fmtcheck: tests/fmtcheck.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtcheck.c lib/libqtree.a $(LDLIBS)
 tests/fmtbench: tests/fmtbench.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtbench.c lib/libqtree.a $(LDLIBS)
+tests/numcheck: tests/numcheck.c tests/splitmix.h lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/numcheck.c lib/libqtree.a $(LDLIBS)
 tools/genpow5: tools/genpow5.c
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tools/genpow5.c
+lib/parse.o: lib/pow5.h
 
-test: all tests/fmtcheck tools/genpow5
+test: all tests/fmtcheck tests/numcheck tools/genpow5
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	bats tests
 
@@ -118,7 +122,7 @@ uninstall:
 
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
-	    tests/fmtbench tools/genpow5 tests/fuzz/polyread \
+	    tests/fmtbench tests/numcheck tools/genpow5 tests/fuzz/polyread \
 	    tests/fuzz/qtsplit tests/fuzz/qtstats
 	rm -f $(POLYREADOBJ)
 
