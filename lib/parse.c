@@ -32,7 +32,8 @@
 #include "internal.h"
 #include "pow5.h"
 
-#define ISDIGIT(c)	((unsigned)(c) - '0' < 10)
+/* A digit's value, or 10 or more for any other character. */
+#define DIGIT(c)	((unsigned)(unsigned char)(c) - '0')
 
 /*
  * Decimal exponents saturate at 2^60, beyond any that can matter (a
@@ -305,86 +306,17 @@ exact(const char *first, const char *stop, int q, uint64_t m, int e,
 }
 
 /*
- * Reads a decimal real: [+-]digits[.digits][(e|E)[+-]digits], at least one
- * digit before the exponent.  Hexadecimal, inf and nan are refused, which
- * strtod alone would accept.  Returns 0 on success with *end after the
- * number, -1 for a malformed number, -2 for one outside double's normal
- * range (see the top of this file).  -0 reads as 0.
- *
- * Digits and exponents of any length are read in bounded memory, without
- * overflow: digit counts are pointer differences, and exponents saturate.
+ * Steps 2 and 3: w 10^q (w > 0) into *out, with neg for the sign.  When
+ * trunc is set, w is the first 19 of the digits from first to stop and
+ * some digit after them is nonzero.
  */
-int
-parsereal(const char *s, const char **end, double *out)
+static int
+nearest(uint64_t w, long long q, int trunc, const char *first,
+    const char *stop, int neg, double *out)
 {
-	const char *p = s, *digits, *point = NULL, *stop, *first;
-	uint64_t w = 0, m, m1, bits;
-	long long x = 0, pos, q;
-	size_t nd, ns;
-	int neg = 0, eneg = 0, trunc = 0, e, e1, r, r1;
+	uint64_t m, m1, bits;
+	int e, e1, r, r1;
 
-	if (*p == '+' || *p == '-')
-		neg = *p++ == '-';
-	for (digits = p; ISDIGIT(*p); p++)
-		w = 10 * w + (uint64_t)(*p - '0');
-	if (*p == '.')
-		for (point = p++; ISDIGIT(*p); p++)
-			w = 10 * w + (uint64_t)(*p - '0');
-	stop = p;
-	nd = (size_t)(stop - digits) - (point != NULL);
-	if (nd == 0)
-		return -1;
-	if (*p == 'e' || *p == 'E') {
-		const char *t = p + 1;
-
-		if (*t == '+' || *t == '-')
-			eneg = *t++ == '-';
-		if (!ISDIGIT(*t))
-			return -1;
-		for (; ISDIGIT(*t); t++)
-			x = x < EXPCAP / 10 ? 10 * x + (*t - '0') : EXPCAP;
-		p = t;
-	}
-	*end = p;
-	pos = point != NULL ? -(long long)(stop - point - 1) : 0;
-
-	/*
-	 * w took every digit, modulo 2^64.  Past 19 digits, leading zeros
-	 * aside, w is the first 19 and the others count in the exponent,
-	 * and whether any of them is nonzero (trunc).
-	 */
-	first = digits;
-	if (nd > 19) {
-		for (; first < stop && (*first == '0' || *first == '.'); first++)
-			;
-		ns = (size_t)(stop - first) - (point != NULL && point >= first);
-		if (ns > 19) {
-			const char *t = first;
-			int i;
-
-			for (w = 0, i = 0; i < 19; t++)
-				if (*t != '.') {
-					w = 10 * w + (uint64_t)(*t - '0');
-					i++;
-				}
-			for (; t < stop && !trunc; t++)
-				trunc = *t != '0' && *t != '.';
-			pos += (long long)(ns - 19);
-		}
-	}
-	if (w == 0) {
-		*out = 0.0;	/* -0 reads as 0 */
-		return 0;
-	}
-	q = clampexp(eneg ? -x : x) + clampexp(pos);
-
-#if FLT_EVAL_METHOD == 0
-	if (!trunc && w <= (uint64_t)1 << 53 && q >= -22 && q <= 22) {
-		double v = q < 0 ? (double)w / exact10[-q] : (double)w * exact10[q];
-		*out = neg ? -v : v;
-		return 0;
-	}
-#endif
 	/* below 10^-324 or from 10^309 on, whatever the digits */
 	if (q < POW5MIN || q > POW5MAX)
 		return -2;
@@ -413,6 +345,96 @@ parsereal(const char *s, const char **end, double *out)
 		bits |= (uint64_t)1 << 63;
 	memcpy(out, &bits, sizeof(*out));
 	return 0;
+}
+
+/*
+ * Reads a decimal real: [+-]digits[.digits][(e|E)[+-]digits], at least one
+ * digit before the exponent.  Hexadecimal, inf and nan are refused, which
+ * strtod alone would accept.  Returns 0 on success with *end after the
+ * number, -1 for a malformed number, -2 for one outside double's normal
+ * range (see the top of this file).  -0 reads as 0.
+ *
+ * Digits and exponents of any length are read in bounded memory, without
+ * overflow: digit counts are pointer differences, and exponents saturate.
+ */
+int
+parsereal(const char *s, const char **end, double *out)
+{
+	const char *p = s, *digits, *point = NULL, *stop, *first;
+	uint64_t w = 0;
+	long long x = 0, q, pos;
+	size_t nd, ns, nfrac = 0;
+	unsigned d;
+	int neg = 0, eneg = 0, trunc = 0;
+
+	if (*p == '+' || *p == '-')
+		neg = *p++ == '-';
+	for (digits = p; (d = DIGIT(*p)) < 10; p++)
+		w = 10 * w + d;
+	if (*p == '.') {
+		for (point = p++; (d = DIGIT(*p)) < 10; p++)
+			w = 10 * w + d;
+		nfrac = (size_t)(p - point - 1);
+	}
+	stop = p;
+	nd = (size_t)(stop - digits) - (point != NULL);
+	if (nd == 0)
+		return -1;
+	if (*p == 'e' || *p == 'E') {
+		const char *t = p + 1;
+
+		if (*t == '+' || *t == '-')
+			eneg = *t++ == '-';
+		if (DIGIT(*t) >= 10)
+			return -1;
+		for (; (d = DIGIT(*t)) < 10; t++)
+			x = x < EXPCAP / 10 ? 10 * x + d : EXPCAP;
+		p = t;
+	}
+	*end = p;
+
+	/*
+	 * w took every digit, modulo 2^64.  Past 19 digits, leading zeros
+	 * aside, w is the first 19 and the others count in the exponent,
+	 * and whether any of them is nonzero (trunc).
+	 */
+	first = digits;
+	if (nd <= 19)
+		q = (eneg ? -x : x) - (long long)nfrac;
+	else {
+		for (; first < stop && (*first == '0' || *first == '.'); first++)
+			;
+		ns = (size_t)(stop - first) - (point != NULL && point >= first);
+		pos = -(long long)nfrac;
+		if (ns > 19) {
+			const char *t = first;
+			int i;
+
+			for (w = 0, i = 0; i < 19; t++)
+				if (*t != '.') {
+					w = 10 * w + (uint64_t)(*t - '0');
+					i++;
+				}
+			for (; t < stop && !trunc; t++)
+				trunc = *t != '0' && *t != '.';
+			pos += (long long)(ns - 19);
+		}
+		q = clampexp(eneg ? -x : x) + clampexp(pos);
+	}
+	if (w == 0) {
+		*out = 0.0;	/* -0 reads as 0 */
+		return 0;
+	}
+#if FLT_EVAL_METHOD == 0
+	if (!trunc && w <= (uint64_t)1 << 53 && q >= -22 && q <= 22) {
+		double v = q < 0 ? (double)w / exact10[-q] :
+		    (double)w * exact10[q];
+
+		*out = neg ? -v : v;
+		return 0;
+	}
+#endif
+	return nearest(w, q, trunc, first, stop, neg, out);
 }
 
 /*
