@@ -126,8 +126,7 @@ uninstall:
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
 	    tests/fmtbench tests/numcheck tests/numbench tools/genpow5 \
-	    tests/fuzz/polyread \
-	    tests/fuzz/qtsplit tests/fuzz/qtstats
+	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats
 	rm -f $(POLYREADOBJ)
 
 .PHONY: all test demo regress bench sanitize fuzz install uninstall clean
