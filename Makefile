@@ -56,13 +56,22 @@ tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
 tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
-# fmtbench times it.
+# fmtbench times it; numcheck checks parsereal against strtod, numbench
+# times both (tools/benchnum.sh).  genpow5 writes lib/pow5.h, which is
+# committed (tests/numcheck.bats compares).
 tests/fmtcheck: tests/fmtcheck.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtcheck.c lib/libqtree.a $(LDLIBS)
 tests/fmtbench: tests/fmtbench.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtbench.c lib/libqtree.a $(LDLIBS)
+tests/numcheck: tests/numcheck.c tests/splitmix.h lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/numcheck.c lib/libqtree.a $(LDLIBS)
+tests/numbench: tests/numbench.c lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/numbench.c lib/libqtree.a $(LDLIBS)
+tools/genpow5: tools/genpow5.c
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tools/genpow5.c
+lib/parse.o: lib/pow5.h
 
-test: all tests/fmtcheck
+test: all tests/fmtcheck tests/numcheck tools/genpow5
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	bats tests
 
@@ -95,7 +104,7 @@ regress: all
 	sh tests/regress.sh
 
 # Times polyread and qtsplit on generated polygons and draws samples/bench.svg.
-bench: all
+bench: all tests/numbench
 	sh tools/bench.sh
 
 # qtree against p4est and CGAL, each when installed: counts checked, one
@@ -121,7 +130,8 @@ uninstall:
 
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
-	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
+	    tests/fmtbench tests/numcheck tests/numbench tools/genpow5 \
+	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
 	    tests/fuzz/qt2svg
 	rm -f $(POLYREADOBJ)

@@ -39,6 +39,7 @@
 #include <string.h>
 
 #include "qtree.h"
+#include "internal.h"
 
 /* The 10^e used: e = -k for every level k, and -k + 1 for one more digit. */
 #define E10MIN	(-292)
@@ -154,26 +155,6 @@ initpow10(void)
 		}
 	}
 	ready = 1;
-}
-
-/* The 128-bit product of two 64-bit numbers. */
-static void
-mul64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
-{
-#ifdef __SIZEOF_INT128__
-	__extension__ unsigned __int128 p = (unsigned __int128)a * b;
-
-	*hi = (uint64_t)(p >> 64);
-	*lo = (uint64_t)p;
-#else
-	uint64_t a1 = a >> 32, a0 = a & 0xffffffff;
-	uint64_t b1 = b >> 32, b0 = b & 0xffffffff;
-	uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
-	uint64_t mid = (p00 >> 32) + (p01 & 0xffffffff) + (p10 & 0xffffffff);
-
-	*hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
-	*lo = mid << 32 | (p00 & 0xffffffff);
-#endif
 }
 
 /*

@@ -10,8 +10,9 @@
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
 # Then tools/benchshards.sh: the speed-up of shards made by GNU parallel
-# -j 2 over a single run; and tools/benchir.sh: every program's
-# instructions a record, by callgrind, when valgrind is installed.
+# -j 2 over a single run; tools/benchir.sh: every program's
+# instructions a record, by callgrind, when valgrind is installed; and
+# tools/benchnum.sh: parsereal against strtod, a number at a time.
 #
 # Polygons (tools/genpoly.awk, the same with any awk): star polygons of
 # N = 10^2 ... 10^6 vertices around a square hole, and Koch snowflakes
@@ -414,6 +415,12 @@ sh tools/benchshards.sh
 if command -v valgrind >/dev/null 2>&1; then
 	echo
 	sh tools/benchir.sh .
+fi
+
+# The number reader against strtod (make bench builds tests/numbench).
+if [ -x tests/numbench ]; then
+	echo
+	sh tools/benchnum.sh
 fi
 
 echo
