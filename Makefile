@@ -14,7 +14,8 @@ MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
 	man/qt2svg.1 man/qtcat.1 man/qtmesh.1 man/qtbalance.1
 MAN5 = man/qtree.5
 LIBOBJ = lib/msg.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
-	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o
+	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
+	lib/pow5.o
 
 all: $(BIN)
 
@@ -57,7 +58,7 @@ tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it; numcheck checks parsereal against strtod, numbench
-# times both (tools/benchnum.sh).  genpow5 writes lib/pow5.h, which is
+# times both (tools/benchnum.sh).  genpow5 writes lib/pow5.c, which is
 # committed (tests/numcheck.bats compares).
 tests/fmtcheck: tests/fmtcheck.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtcheck.c lib/libqtree.a $(LDLIBS)
@@ -69,7 +70,6 @@ tests/numbench: tests/numbench.c lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/numbench.c lib/libqtree.a $(LDLIBS)
 tools/genpow5: tools/genpow5.c
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tools/genpow5.c
-lib/parse.o: lib/pow5.h
 
 test: all tests/fmtcheck tests/numcheck tools/genpow5
 	mandoc -T lint -W warning $(MAN1) $(MAN5)

@@ -30,8 +30,8 @@
  * of that %.15g are the shortest ones; a subnormal gets its shortest digits
  * ("5e-324", where %.15g would add noise).
  *
- * The powers of ten are computed once, at the first call, with exact
- * integer arithmetic (see initpow10).
+ * The powers of ten are those of five in lib/pow5.c, which
+ * tools/genpow5.c computes with exact integer arithmetic.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -45,116 +45,17 @@
 #define E10MIN	(-292)
 #define E10MAX	325
 
-/*
- * 10^e = g 2^(beta - 127) with 2^127 <= g < 2^128, where g is rounded up
- * unless exact: a product with g is never below the true one.
- */
-struct pow10 {
-	uint64_t	 hi, lo;
-	int		 beta;
-	int		 exact;
-};
+#if E10MIN < POW5MIN || E10MAX > POW5MAX
+#error "lib/pow5.c does not hold the powers of ten that fmtreal uses"
+#endif
 
-static struct pow10 pow10tab[E10MAX - E10MIN + 1];
-static uint64_t pow5[28];	/* 5^0 .. 5^27, all below 2^64 */
-static int ready;
-
-/* Bits of a little-endian array of 32-bit limbs; bits outside are zero. */
-static int
-bigbit(const uint32_t *x, int nlimb, long i)
+/* 5^n for n < 28, below 2^64: the table's high word, shifted down. */
+static inline uint64_t
+pow5small(int n)
 {
-	if (i < 0 || i >= 32L * nlimb)
-		return 0;
-	return x[i / 32] >> (i % 32) & 1;
-}
+	const struct pow5 *p = &pow5tab[n - POW5MIN];
 
-static int
-bitlen(const uint32_t *x, int nlimb)
-{
-	uint32_t t;
-	int i = nlimb - 1, n = 0;
-
-	while (i > 0 && x[i] == 0)
-		i--;
-	for (t = x[i]; t != 0; t >>= 1)
-		n++;
-	return 32 * i + n;
-}
-
-/* Bits from..from+127 of x (from may be negative) into e. */
-static void
-bigtop(const uint32_t *x, int nlimb, long from, struct pow10 *e)
-{
-	long i;
-
-	e->hi = e->lo = 0;
-	for (i = 127; i >= 64; i--)
-		e->hi = e->hi << 1 | bigbit(x, nlimb, from + i);
-	for (; i >= 0; i--)
-		e->lo = e->lo << 1 | bigbit(x, nlimb, from + i);
-}
-
-static void
-roundup(struct pow10 *e)
-{
-	if (++e->lo == 0)
-		e->hi++;
-	/* 2^128 - 1 never occurs as a truncated power of ten here. */
-	if (e->hi == 0)
-		abort();
-}
-
-/*
- * 10^n = 5^n 2^n takes the top 128 bits of 5^n; 10^-n = 2^-n / 5^n takes
- * those of floor(2^B / 5^n), got by dividing 2^B by 5 n times (each floor
- * of a floor is the floor of the quotient), B leaving 128 bits to spare
- * past 5^-(-E10MIN).
- */
-#define BIGLIMBS	26	/* 832 bits: above 5^325 and 2^(128 + 679) */
-
-static void
-initpow10(void)
-{
-	uint32_t p5[BIGLIMBS], inv[BIGLIMBS];
-	const long B = 32L * BIGLIMBS - 1;
-	uint64_t t;
-	int n, i, len;
-
-	memset(p5, 0, sizeof(p5));
-	memset(inv, 0, sizeof(inv));
-	p5[0] = 1;
-	inv[BIGLIMBS - 1] = (uint32_t)1 << 31;	/* 2^B */
-	for (n = 0; n <= E10MAX; n++) {
-		struct pow10 *e;
-
-		len = bitlen(p5, BIGLIMBS);
-		if (n < 28)
-			pow5[n] = (uint64_t)p5[1] << 32 | p5[0];
-		e = &pow10tab[n - E10MIN];
-		e->beta = n + len - 1;
-		bigtop(p5, BIGLIMBS, len - 128, e);
-		e->exact = len <= 128;	/* 5^n is odd: a bit is lost past 128 */
-		if (!e->exact)
-			roundup(e);
-		if (n >= 1 && -n >= E10MIN) {
-			e = &pow10tab[-n - E10MIN];
-			e->beta = -n - len;
-			e->exact = 0;
-			bigtop(inv, BIGLIMBS, B - 127 - len, e);
-			roundup(e);
-		}
-		for (t = 0, i = 0; i < BIGLIMBS; i++) {
-			t += (uint64_t)p5[i] * 5;
-			p5[i] = (uint32_t)t;
-			t >>= 32;
-		}
-		for (t = 0, i = BIGLIMBS - 1; i >= 0; i--) {
-			t = t << 32 | inv[i];
-			inv[i] = (uint32_t)(t / 5);
-			t %= 5;
-		}
-	}
-	ready = 1;
+	return p->hi >> (-p->e - 64);
 }
 
 /*
@@ -169,18 +70,26 @@ initpow10(void)
 static inline uint64_t
 scale(uint64_t x, int q, int e, int *doubt)
 {
-	const struct pow10 *p = &pow10tab[e - E10MIN];
-	uint64_t cp = x << (q + p->beta + 1), a1, a0, b1, b0, mid, top;
+	/*
+	 * 10^e = 5^e 2^e = g 2^(beta - 127): g is 5^e's 128 bits from the
+	 * table, rounded up unless exact (5^e below 2^128), so that a product
+	 * with g is never below the true one.
+	 */
+	const struct pow5 *p = &pow5tab[e - POW5MIN];
+	int exact = e >= 0 && e <= 55, beta = p->e + e + 127;
+	uint64_t ghi = p->hi, glo = p->lo + !exact;
+	uint64_t cp = x << (q + beta + 1), a1, a0, b1, b0, mid, top;
 
-	mul64(cp, p->lo, &a1, &a0);
-	mul64(cp, p->hi, &b1, &b0);
+	ghi += glo < p->lo;	/* a carry; 2^128 - 1 never occurs */
+	mul64(cp, glo, &a1, &a0);
+	mul64(cp, ghi, &b1, &b0);
 	mid = b0 + a1;
 	top = b1 + (mid < a1);
-	if (p->exact)
+	if (exact)
 		return top | ((mid | a0) != 0);
 	if (mid != 0 || a0 >= cp)
 		return top | 1;
-	if (e < 0 && -e < 28 && x % pow5[-e] == 0)
+	if (e < 0 && -e < 28 && x % pow5small(-e) == 0)
 		return top;
 	*doubt = 1;
 	return top;
@@ -417,8 +326,6 @@ fmtreal(char *buf, double v)
 		buf[1] = '\0';
 		return buf + 1;
 	}
-	if (!ready)
-		initpow10();
 	frac = bits & (((uint64_t)1 << 52) - 1);
 	bexp = (int)(bits >> 52 & 0x7ff);
 	if (bexp == 0) {

@@ -62,3 +62,18 @@ celltext(struct celltext *t, int level, int axis, uint64_t i)
 
 	return k->i == i ? k : celltext_miss(t, level, axis, i);
 }
+
+/*
+ * pow5.c: 5^q for q = POW5MIN .. POW5MAX as (hi 2^64 + lo) 2^e, 2^127 <=
+ * hi 2^64 + lo < 2^128, truncated (exact for 0 <= q <= 55), written by
+ * tools/genpow5.c: what parsereal multiplies by and fmtreal scales by.
+ */
+#define POW5MIN	(-342)
+#define POW5MAX	325
+
+struct pow5 {
+	uint64_t	 hi, lo;
+	int		 e;
+};
+
+extern const struct pow5 pow5tab[POW5MAX - POW5MIN + 1];

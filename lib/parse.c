@@ -10,7 +10,7 @@
  *    correctly rounded product or quotient is the answer.
  * 2. Eisel and Lemire's method (D. Lemire, "Number parsing at a gigabyte
  *    per second", 2021): the first 19 significant digits w times the top
- *    128 bits of 5^q (lib/pow5.h) settle the 53 bits and the rounding,
+ *    128 bits of 5^q (lib/pow5.c) settle the 53 bits and the rounding,
  *    unless the product's lost low bits could change them.
  * 3. Big integers: the decimal compared exactly with the point halfway
  *    between two neighbouring doubles.
@@ -30,7 +30,6 @@
 
 #include "qtree.h"
 #include "internal.h"
-#include "pow5.h"
 
 /* A digit's value, or 10 or more for any other character. */
 #define DIGIT(c)	((unsigned)(unsigned char)(c) - '0')
@@ -318,7 +317,7 @@ nearest(uint64_t w, long long q, int trunc, const char *first,
 	int e, e1, r, r1;
 
 	/* below 10^-324 or from 10^309 on, whatever the digits */
-	if (q < POW5MIN || q > POW5MAX)
+	if (q < POW5MIN || q > DBL_MAX_10_EXP)
 		return -2;
 	r = lemire(w, (int)q, &m, &e);
 	if (e + 1075 >= 2047)

@@ -1,22 +1,25 @@
 /*
- * genpow5: writes lib/pow5.h, the table of powers of five that parsereal
- * (lib/parse.c) multiplies by, on standard output.
+ * genpow5: writes lib/pow5.c, the table of powers of five that parsereal
+ * (lib/parse.c) multiplies by and fmtreal (lib/fmt.c) scales by, on
+ * standard output.
  *
- *	genpow5 > lib/pow5.h
+ *	genpow5 > lib/pow5.c
  *
  * The table is committed; tests/numcheck.bats runs this program and
  * compares.  Each 5^q, q = POW5MIN .. POW5MAX, is kept as its top 128 bits,
  * truncated, with exact integer arithmetic: for q >= 0 the bits of 5^q
  * itself, for q < 0 those of floor(2^k / 5^-q), k making 128 bits.
- * POW5MIN and POW5MAX are the least and greatest q for which a 19-digit
- * decimal w 10^q can be a double (see lib/parse.c).
+ * POW5MIN is the least q for which a 19-digit decimal w 10^q can be a
+ * double (see lib/parse.c); POW5MAX the greatest power of ten that
+ * fmtreal scales by (10^-k for the least binary exponent q, k =
+ * floor(q log10 2), and one more digit).  lib/internal.h has both.
  */
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
 #define POW5MIN	(-342)
-#define POW5MAX	308
+#define POW5MAX	325
 #define LIMBS	32	/* 1024 bits: above 5^342 and twice it */
 
 /* Naturals as little-endian 32-bit limbs. */
@@ -150,18 +153,22 @@ main(void)
 	}
 
 	printf("/*\n"
-	    " * pow5.h: written by tools/genpow5.c, not by hand; tests/numcheck.bats\n"
+	    " * pow5.c: written by tools/genpow5.c, not by hand; tests/numcheck.bats\n"
 	    " * checks that the two agree.  5^q for q = POW5MIN .. POW5MAX is\n"
 	    " * (hi 2^64 + lo) 2^e, 2^127 <= hi 2^64 + lo < 2^128, truncated: exact\n"
 	    " * for 0 <= q <= 55, below 5^q by less than 2^e for the others.\n"
 	    " */\n"
-	    "#define POW5MIN\t(%d)\n"
-	    "#define POW5MAX\t%d\n"
+	    "#include <stdint.h>\n"
 	    "\n"
-	    "static const struct pow5 {\n"
-	    "\tuint64_t\t hi, lo;\n"
-	    "\tint\t\t e;\n"
-	    "} pow5tab[POW5MAX - POW5MIN + 1] = {\n", POW5MIN, POW5MAX);
+	    "#include \"qtree.h\"\n"
+	    "#include \"internal.h\"\n"
+	    "\n"
+	    "#if POW5MIN != %d || POW5MAX != %d\n"
+	    "#error \"lib/internal.h and tools/genpow5.c disagree\"\n"
+	    "#endif\n"
+	    "\n"
+	    "const struct pow5 pow5tab[POW5MAX - POW5MIN + 1] = {\n",
+	    POW5MIN, POW5MAX);
 	for (q = POW5MIN; q <= POW5MAX; q++)
 		printf("\t{ 0x%016llx, 0x%016llx, %d },\t/* 5^%d */\n",
 		    (unsigned long long)hi[q - POW5MIN],

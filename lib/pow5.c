@@ -1,16 +1,19 @@
 /*
- * pow5.h: written by tools/genpow5.c, not by hand; tests/numcheck.bats
+ * pow5.c: written by tools/genpow5.c, not by hand; tests/numcheck.bats
  * checks that the two agree.  5^q for q = POW5MIN .. POW5MAX is
  * (hi 2^64 + lo) 2^e, 2^127 <= hi 2^64 + lo < 2^128, truncated: exact
  * for 0 <= q <= 55, below 5^q by less than 2^e for the others.
  */
-#define POW5MIN	(-342)
-#define POW5MAX	308
+#include <stdint.h>
 
-static const struct pow5 {
-	uint64_t	 hi, lo;
-	int		 e;
-} pow5tab[POW5MAX - POW5MIN + 1] = {
+#include "qtree.h"
+#include "internal.h"
+
+#if POW5MIN != -342 || POW5MAX != 325
+#error "lib/internal.h and tools/genpow5.c disagree"
+#endif
+
+const struct pow5 pow5tab[POW5MAX - POW5MIN + 1] = {
 	{ 0xeef453d6923bd65a, 0x113faa2906a13b3f, -922 },	/* 5^-342 */
 	{ 0x9558b4661b6565f8, 0x4ac7ca59a424c507, -919 },	/* 5^-341 */
 	{ 0xbaaee17fa23ebf76, 0x5d79bcf00d2df649, -917 },	/* 5^-340 */
@@ -662,4 +665,21 @@ static const struct pow5 {
 	{ 0xb6472e511c81471d, 0xe0133fe4adf8e952, 583 },	/* 5^306 */
 	{ 0xe3d8f9e563a198e5, 0x58180fddd97723a6, 585 },	/* 5^307 */
 	{ 0x8e679c2f5e44ff8f, 0x570f09eaa7ea7648, 588 },	/* 5^308 */
+	{ 0xb201833b35d63f73, 0x2cd2cc6551e513da, 590 },	/* 5^309 */
+	{ 0xde81e40a034bcf4f, 0xf8077f7ea65e58d1, 592 },	/* 5^310 */
+	{ 0x8b112e86420f6191, 0xfb04afaf27faf782, 595 },	/* 5^311 */
+	{ 0xadd57a27d29339f6, 0x79c5db9af1f9b563, 597 },	/* 5^312 */
+	{ 0xd94ad8b1c7380874, 0x18375281ae7822bc, 599 },	/* 5^313 */
+	{ 0x87cec76f1c830548, 0x8f2293910d0b15b5, 602 },	/* 5^314 */
+	{ 0xa9c2794ae3a3c69a, 0xb2eb3875504ddb22, 604 },	/* 5^315 */
+	{ 0xd433179d9c8cb841, 0x5fa60692a46151eb, 606 },	/* 5^316 */
+	{ 0x849feec281d7f328, 0xdbc7c41ba6bcd333, 609 },	/* 5^317 */
+	{ 0xa5c7ea73224deff3, 0x12b9b522906c0800, 611 },	/* 5^318 */
+	{ 0xcf39e50feae16bef, 0xd768226b34870a00, 613 },	/* 5^319 */
+	{ 0x81842f29f2cce375, 0xe6a1158300d46640, 616 },	/* 5^320 */
+	{ 0xa1e53af46f801c53, 0x60495ae3c1097fd0, 618 },	/* 5^321 */
+	{ 0xca5e89b18b602368, 0x385bb19cb14bdfc4, 620 },	/* 5^322 */
+	{ 0xfcf62c1dee382c42, 0x46729e03dd9ed7b5, 622 },	/* 5^323 */
+	{ 0x9e19db92b4e31ba9, 0x6c07a2c26a8346d1, 625 },	/* 5^324 */
+	{ 0xc5a05277621be293, 0xc7098b7305241885, 627 },	/* 5^325 */
 };
