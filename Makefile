@@ -56,13 +56,16 @@ tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
 tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
-# fmtbench times it.
+# fmtbench times it, rangecheck checks qtree(5)'s range rule.
 tests/fmtcheck: tests/fmtcheck.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtcheck.c lib/libqtree.a $(LDLIBS)
 tests/fmtbench: tests/fmtbench.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtbench.c lib/libqtree.a $(LDLIBS)
 
-test: all tests/fmtcheck
+tests/rangecheck: tests/rangecheck.c tests/splitmix.h lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/rangecheck.c lib/libqtree.a $(LDLIBS)
+
+test: all tests/fmtcheck tests/rangecheck
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	bats tests
 
@@ -116,7 +119,7 @@ uninstall:
 
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
-	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats
+	    tests/rangecheck tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats
 	rm -f $(POLYREADOBJ)
 
 .PHONY: all test demo regress bench sanitize fuzz install uninstall clean
