@@ -144,3 +144,75 @@ assert any(x0 + (i + 1) * h == x0 + i * h for i in range(2**20))
 	# the cases are not all alike
 	[ "$(sort -u want | wc -l)" -ge 8 ]
 }
+
+# The issue's triangle near x = 100000, in the universe 100000 0 1.
+triangle() {
+	printf '100000.25 0.25\n100000.75 0.3\n100000.25 0.75\n' |
+	    polyread -u 100000,0,1
+}
+
+@test "qtsplit(1): a level past the universe's deepest is refused, naming the limit and why" {
+	triangle > t.qt
+	run -2 --separate-stderr qtsplit -l 38 -r 120002200220022002200220022002200220 t.qt
+	[ "$stderr" = "qtsplit: -l: level 38 is past the deepest level 36 of universe 100000 0 1: cell corners would no longer be distinct doubles" ]
+	[ -z "$output" ]
+	run -2 --separate-stderr qtsplit -l 37 -r 120002200220022002200220022002200220 t.qt
+	[[ "$stderr" == "qtsplit: -l: level 37 is past the deepest level 36 "* ]]
+	# the page's example, whole
+	run -2 --separate-stderr bash -c "printf '100000.25 0.25\n100000.75 0.3\n100000.25 0.75\n' |
+	    polyread -u 100000,0,1 | timeout 20 qtsplit -l 38 > /dev/null"
+	grep -qxF "$stderr" "$TOP/man/qtsplit.1"
+}
+
+@test "qtsplit: -L past the deepest level is refused, -m cannot pass -l" {
+	triangle > t.qt
+	# -r keeps the trees small should a level pass
+	set -- -r 120002200220022002200220022002200220
+	run -2 --separate-stderr qtsplit -l 30 -L 1=37 "$@" t.qt
+	[ "$stderr" = "qtsplit: -L: level 37 is past the deepest level 36 of universe 100000 0 1: cell corners would no longer be distinct doubles" ]
+	run -2 --separate-stderr qtsplit -l 30 -L holes=37 "$@" t.qt
+	[[ "$stderr" == "qtsplit: -L: level 37 is past the deepest level 36 "* ]]
+	run -2 --separate-stderr qtsplit -l 37 -m 37 "$@" t.qt
+	[[ "$stderr" == "qtsplit: -l: level 37 is past"* ]]
+	run -2 --separate-stderr qtsplit -m 37 "$@" t.qt
+	[[ "$stderr" == "qtsplit: -m 37 is deeper than the maximum level 6" ]]
+}
+
+@test "at the deepest level every cell written has corners that are distinct doubles" {
+	triangle > t.qt
+	d=$(qtstats t.qt | awk '$1 == "universe_deepest_level" { print $2 }')
+	# the issue's subtree at level 33, down to the deepest level (36),
+	# split uniformly by -m: 1 + 4 + 16 + 64 cells
+	qtsplit -l "$d" -m "$d" -r 120002200220022002200220022002200 t.qt > c.qt
+	# each cell as qtree(5) defines it, in python3: its x and y are
+	# x0 + ix h and y0 + iy h, and the next column's and row's are larger
+	python3 - c.qt "$d" <<-'PY'
+	import sys
+	x0, y0, size = 100000.0, 0.0, 1.0
+	n = 0
+	for line in open(sys.argv[1]):
+	    f = line.split()
+	    if f[0] not in ("node", "leaf"):
+	        continue
+	    level, ix, iy = int(f[2]), int(f[3]), int(f[4])
+	    x, y, s = float(f[5]), float(f[6]), float(f[7])
+	    h = size / 2 ** level
+	    assert s == h and x == x0 + ix * h and y == y0 + iy * h, line
+	    assert x0 + (ix + 1) * h > x and y0 + (iy + 1) * h > y, line
+	    n += 1
+	assert n == (4 ** (int(sys.argv[2]) - 32) - 1) // 3, n
+	PY
+	[ "$d" = 36 ]
+}
+
+@test "qtsplit's default level is no deeper than the universe allows" {
+	printf '0 0\n1e-100 0\n0 1e-100\n' | polyread -u 0,0,1e-100 > t.qt
+	# by hand: level 1's cells would be 5e-101 wide, so the deepest level
+	# is 0 and the tree is the root, which the hypotenuse crosses
+	cat > want <<-'EOF'
+	level 0
+	leaf . 0 0 0 0 0 1e-100 P
+	EOF
+	qtsplit t.qt | grep -E '^(level|leaf)' > got
+	diff -u want got
+}
