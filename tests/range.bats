@@ -216,3 +216,37 @@ triangle() {
 	qtsplit t.qt | grep -E '^(level|leaf)' > got
 	diff -u want got
 }
+
+@test "polyread refuses a bounding square outside the range, and writes nothing" {
+	# issue 15: a triangle 5e-101 across, then one 2e100 across
+	run -1 --separate-stderr bash -c "printf '1e-100 1e-100\n1.5e-100 1e-100\n1e-100 1.5e-100\n' | polyread"
+	[ "$stderr" = "polyread: universe 1e-100 1e-100 5e-101 is outside the supported range: its size, 5e-101, lies nearer 0 than 1e-100 (the rings' bounding square; -u gives another)" ]
+	[ -z "$output" ]
+	run -1 --separate-stderr bash -c "printf -- '-1e100 -1e100\n1e100 -1e100\n-1e100 1e100\n' | polyread"
+	[[ "$stderr" == "polyread: universe -1e+100 -1e+100 2e+100 is outside the supported range: its size, 2e+100, lies past 1e100 "* ]]
+	[ -z "$output" ]
+	# and -u rescues the first
+	run -0 bash -c "printf '1e-100 1e-100\n1.5e-100 1e-100\n1e-100 1.5e-100\n' | polyread -u 0,0,2e-100 | qtsplit | qtstats"
+}
+
+@test "polyread: -u and -l are held to the range rule" {
+	printf '0 0\n1e-100 0\n0 1e-100\n' > t.xy
+	run -2 --separate-stderr polyread -u 9e99,9e99,9e99 t.xy
+	[ "$stderr" = "polyread: -u: universe 9e+99 9e+99 9e+99 is outside the supported range: its x0 + size, 1.8e+100, lies past 1e100" ]
+	run -2 --separate-stderr polyread -u 0,0,1e-100 -l 1 t.xy
+	[ "$stderr" = "polyread: -l: level 1 is past the deepest level 0 of universe 0 0 1e-100: cells would be smaller than 1e-100" ]
+	printf '100000.25 0.25\n100000.75 0.3\n100000.25 0.75\n' > n.xy
+	run -2 --separate-stderr polyread -u 100000,0,1 -l 37 n.xy
+	[[ "$stderr" == "polyread: -l: level 37 is past the deepest level 36 "* ]]
+	run -0 polyread -u 100000,0,1 -l 36 n.xy
+	[ "${lines[2]}" = "level 36" ]
+}
+
+@test "issue 15's pipelines stop where the level is chosen, before any cell" {
+	printf '0 0\n1e-100 0\n0 1e-100\n' > t.xy
+	run -2 --separate-stderr bash -c 'polyread -u 0,0,1e-100 t.xy | qtsplit -l 2'
+	[[ "$stderr" == "qtsplit: -l: level 2 is past the deepest level 0 of universe 0 0 1e-100: cells would be smaller than 1e-100" ]]
+	[ -z "$output" ]
+	run -2 --separate-stderr polyread -u 9e99,9e99,9e99 t.xy
+	[ -z "$output" ]
+}
