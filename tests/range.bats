@@ -250,3 +250,13 @@ triangle() {
 	run -2 --separate-stderr polyread -u 9e99,9e99,9e99 t.xy
 	[ -z "$output" ]
 }
+
+@test "the universe is read by value: 1e-100 spelled 0.1e-99 is the same stream" {
+	printf '0 0\n1e-100 0\n0 1e-100\n' | polyread -u 0,0,1e-100 | qtsplit > a.qt
+	sed 's/1e-100/0.1e-99/g' a.qt > b.qt
+	grep -q 0.1e-99 b.qt
+	qtstats a.qt > want
+	qtstats b.qt > got
+	diff -u want got
+	grep -qx 'universe_deepest_level 0' got
+}
