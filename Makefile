@@ -59,7 +59,8 @@ tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o: lib/qtree.h
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it; numcheck checks parsereal against strtod, numbench
 # times both (tools/benchnum.sh).  genpow5 writes lib/pow5.c, which is
-# committed (tests/numcheck.bats compares).
+# committed (tests/numcheck.bats compares).  rangecheck checks qtree(5)'s
+# range rule.
 tests/fmtcheck: tests/fmtcheck.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtcheck.c lib/libqtree.a $(LDLIBS)
 tests/fmtbench: tests/fmtbench.c tests/splitmix.h lib/libqtree.a
@@ -71,7 +72,10 @@ tests/numbench: tests/numbench.c lib/libqtree.a
 tools/genpow5: tools/genpow5.c
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tools/genpow5.c
 
-test: all tests/fmtcheck tests/numcheck tools/genpow5
+tests/rangecheck: tests/rangecheck.c tests/splitmix.h lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/rangecheck.c lib/libqtree.a $(LDLIBS)
+
+test: all tests/fmtcheck tests/numcheck tools/genpow5 tests/rangecheck
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	bats tests
 
@@ -131,6 +135,7 @@ uninstall:
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
 	    tests/fmtbench tests/numcheck tests/numbench tools/genpow5 \
+	    tests/rangecheck \
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
 	    tests/fuzz/qt2svg

@@ -77,6 +77,19 @@ struct cell {
 };
 
 double	 cellcoord(double, double, int, uint64_t);
+/*
+ * The range rule of qtree(5): univdeepest gives a universe's deepest
+ * level, 0 to QT_MAXLEVEL, the last at which every cell corner is a
+ * distinct double and every corner and size is a coordinate coordok
+ * takes, or -1 when the universe itself breaks the rule; why (n bytes,
+ * when not NULL) says what stops the next level, or the universe.
+ * univcheck gives NULL when level (-1: none) is within the universe's
+ * reach, else the message: "level L is past the deepest level D of
+ * universe X0 Y0 SIZE: why", or "universe X0 Y0 SIZE is outside the
+ * supported range: why"; it is overwritten by the next call.
+ */
+int	 univdeepest(const struct universe *, char *, size_t);
+const char *univcheck(const struct universe *, int);
 int	 pathcell(const char *, int, uint64_t *, uint64_t *);
 int	 pathprefix(const char *, int, const char *, int);
 int	 cellcmp(const struct cell *, const struct cell *);

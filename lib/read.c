@@ -43,6 +43,8 @@ struct qtreader {
 	int		 haveuniverse, havelevel, havecells;
 	int		 deepest;	/* the deepest cell's level, -1 before one */
 	struct universe	 u;
+	int		 ulevels;	/* the universe's deepest level */
+	int		 level;		/* the level record's */
 	struct celltext	 text;
 	char		 tail[192];	/* a cell's fields after its level */
 	/* the last cell: its path, NUL-terminated, and its prefixes' cells */
@@ -296,6 +298,8 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 	if (!r->haveuniverse)
 		qt_fail(r, "%s record before the universe record", tag);
 	level = intfield(r, r->field[2], "level", 0, QT_MAXLEVEL);
+	if (level > r->ulevels)
+		qt_fail(r, "%s", univcheck(&r->u, level));
 	if (pathcell(path, level, &ix, &iy) < 0)
 		qt_fail(r, "path %s does not fit level %d", path, level);
 	k = level > 0 ? pathprefix(path, level, r->path, r->pathlen) : 0;
@@ -445,7 +449,8 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 		return 0;
 	if (!r->haveuniverse || r->vleft > 0)
 		return 0;
-	if ((level = fastpath(r, &p, end, &ix, &iy, &common)) < 0)
+	if ((level = fastpath(r, &p, end, &ix, &iy, &common)) < 0 ||
+	    level > r->ulevels)
 		return 0;
 	kx = celltext(&r->text, level, 0, ix);
 	ky = celltext(&r->text, level, 1, iy);
@@ -502,6 +507,8 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 static void
 universerec(struct qtreader *r, struct qtrec *rec)
 {
+	const char *msg;
+
 	nfields(r, 4, 4);
 	if (r->haveuniverse)
 		qt_fail(r, "second universe record");
@@ -512,6 +519,9 @@ universerec(struct qtreader *r, struct qtrec *rec)
 	rec->u.size = realfield(r, r->field[3], "size");
 	if (rec->u.size <= 0)
 		qt_fail(r, "universe size is not positive");
+	if ((msg = univcheck(&rec->u, r->havelevel ? r->level : -1)) != NULL)
+		qt_fail(r, "%s", msg);
+	r->ulevels = univdeepest(&rec->u, NULL, 0);
 	r->u = rec->u;
 	r->haveuniverse = 1;
 	celltext_init(&r->text, &r->u);
@@ -520,12 +530,17 @@ universerec(struct qtreader *r, struct qtrec *rec)
 static void
 levelrec(struct qtreader *r, struct qtrec *rec)
 {
+	const char *msg;
+
 	nfields(r, 2, 2);
 	if (r->havelevel)
 		qt_fail(r, "second level record");
 	if (r->havecells)
 		qt_fail(r, "level record after cells");
 	rec->level = intfield(r, r->field[1], "level", 0, QT_MAXLEVEL);
+	if (r->haveuniverse && (msg = univcheck(&r->u, rec->level)) != NULL)
+		qt_fail(r, "%s", msg);
+	r->level = rec->level;
 	r->havelevel = 1;
 }
 

@@ -4,6 +4,11 @@
 
 load test_helper
 
+# universe_deepest_level in the figures by hand below: every universe there
+# lies at the origin, 0 0 SIZE, so qtree(5)'s U and u are both the spacing
+# of doubles at SIZE, at most 2^-52 SIZE, and at level 50 h = SIZE / 2^50
+# exceeds their sum: 50.
+
 # Prints the value of key $1 in the qtstats output file $2.
 value() {
 	awk -v k="$1" '$1 == k { print $2; n++ } END { exit n != 1 }' "$2"
@@ -19,6 +24,7 @@ value() {
 	perimeter 8
 	centroid_x 2
 	centroid_y 2
+	universe_deepest_level 50
 	cells 21
 	nodes 5
 	leaves 16
@@ -52,6 +58,7 @@ value() {
 	perimeter 8
 	centroid_x 2
 	centroid_y 2
+	universe_deepest_level 50
 	cells 5
 	nodes 1
 	leaves 4
@@ -86,6 +93,7 @@ value() {
 	perimeter 20
 	centroid_x 1.9666666666666666
 	centroid_y 1.9666666666666666
+	universe_deepest_level 50
 	cells 9
 	nodes 2
 	leaves 7
@@ -123,6 +131,7 @@ value() {
 	perimeter 8
 	centroid_x 0.8333333333333334
 	centroid_y 0.8333333333333334
+	universe_deepest_level 50
 	cells 3
 	nodes 0
 	leaves 3
@@ -337,6 +346,7 @@ value() {
 		perimeter 84
 		centroid_x $c
 		centroid_y $c
+		universe_deepest_level 50
 		cells 0
 		nodes 0
 		leaves 0
@@ -443,6 +453,7 @@ value() {
 	perimeter 8
 	centroid_x 0.8333333333333334
 	centroid_y 0.8333333333333334
+	universe_deepest_level 50
 	cells 0
 	nodes 0
 	leaves 0
@@ -558,6 +569,7 @@ value() {
 	perimeter 8
 	centroid_x 0.8333333333333334
 	centroid_y 1.1666666666666667
+	universe_deepest_level 50
 	cells 5
 	nodes 1
 	leaves 4

@@ -245,6 +245,27 @@ addringlevel(const char *arg)
 }
 
 /*
+ * The maximum level: -l's, the level record's, else 6 or the universe's
+ * deepest level when that is less.  No level an option asks for may be
+ * past it (the reader has checked the level record's).
+ */
+static void
+checklevels(void)
+{
+	int deepest = univdeepest(&in.u, NULL, 0);
+	size_t j;
+
+	if (opt.maxlevel < 0)
+		opt.maxlevel = in.level >= 0 ? in.level :
+		    deepest < 6 ? deepest : 6;
+	if (opt.maxlevel > deepest)
+		die(2, "-l: %s", univcheck(&in.u, opt.maxlevel));
+	for (j = 0; j < opt.nrl; j++)
+		if (opt.rl[j].level > deepest)
+			die(2, "-L: %s", univcheck(&in.u, opt.rl[j].level));
+}
+
+/*
  * Gives each ring its level, -l's or the last -L's that names it, and
  * sets the deepest level a cell may be split to.
  */
@@ -424,8 +445,7 @@ main(int argc, char *argv[])
 	    QT_NEEDUNIVERSE);
 	readrings(r);
 	qt_close(r);
-	if (opt.maxlevel < 0)
-		opt.maxlevel = in.level >= 0 ? in.level : 6;
+	checklevels();
 	if (opt.minlevel > opt.maxlevel)
 		die(2, "-m %d is deeper than the maximum level %d",
 		    opt.minlevel, opt.maxlevel);

@@ -36,6 +36,7 @@ struct levelstat {
 /* The cells, level by level, of the universe they divide. */
 static struct tree {
 	struct universe	 u;
+	int		 haveuniverse;
 	struct levelstat lev[QT_MAXLEVEL + 1];
 	int		 deepest;
 } tree = { .deepest = -1 };
@@ -364,6 +365,7 @@ readstream(struct qtreader *r)
 		switch (kind) {
 		case QT_UNIVERSE:
 			tree.u = rec.u;
+			tree.haveuniverse = 1;
 			break;
 		case QT_RING:
 			ring(&rec.ring);
@@ -879,6 +881,9 @@ report(int table)
 {
 	double area = polygonfigures();
 
+	if (tree.haveuniverse)
+		putcount("universe_deepest_level",
+		    univdeepest(&tree.u, NULL, 0));
 	cellfigures(area);
 	if (mesh.present)
 		meshfigures();

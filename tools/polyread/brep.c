@@ -122,4 +122,5 @@ parsebrep(struct src *s, struct input *in)
 	in->npolys++;
 	brepuniverse(s, in);
 	in->level = level;
+	in->levelfile = s->name;
 }

@@ -75,7 +75,7 @@ detect(struct src *s)
 static void
 parseuniverse(const char *arg, struct universe *u)
 {
-	const char *p = arg, *end;
+	const char *p = arg, *end, *msg;
 	double v[3];
 	int i;
 
@@ -91,6 +91,8 @@ parseuniverse(const char *arg, struct universe *u)
 	u->x0 = v[0];
 	u->y0 = v[1];
 	u->size = v[2];
+	if ((msg = univcheck(u, -1)) != NULL)
+		die(2, "-u: %s", msg);
 }
 
 static void
@@ -167,7 +169,7 @@ main(int argc, char *argv[])
 	const struct format *forced = NULL;
 	struct input in;
 	struct universe optu, u;
-	const char *end;
+	const char *end, *msg;
 	long long level = -1;
 	int ch, i, haveoptu = 0, choosing = 0;
 
@@ -211,9 +213,21 @@ main(int argc, char *argv[])
 		checkuniverse(&in, &u, "given with -u");
 	} else if (in.haveuniverse) {
 		u = in.universe;
+		if ((msg = univcheck(&u, -1)) != NULL)
+			errat(in.universefile, 0, "%s", msg);
 		checkuniverse(&in, &u, "given in the input");
-	} else
+	} else {
 		defaultuniverse(&in, &u);
+		if ((msg = univcheck(&u, -1)) != NULL)
+			die(1, "%s (the rings' bounding square; -u gives "
+			    "another)", msg);
+	}
+	/* the level, -l's or the input's, within the universe's reach */
+	if (level >= 0 && (msg = univcheck(&u, level)) != NULL)
+		die(2, "-l: %s", msg);
+	if (level < 0 && in.level >= 0 &&
+	    (msg = univcheck(&u, in.level)) != NULL)
+		errat(in.levelfile, 0, "%s", msg);
 	if (level < 0)
 		level = in.level;
 	orientrings(&in);

@@ -37,6 +37,7 @@ struct input {
 	int		 haveuniverse;
 	const char	*universefile;
 	int		 level;		/* declared by an input, or -1 */
+	const char	*levelfile;
 };
 
 /* Where two rings touch: the sweep finds them, connectivity reads them. */
