@@ -9,12 +9,12 @@ CFLAGS = -O2 -g -Wall -Wextra
 QTCFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -ffp-contract=off -Ilib
 LDLIBS = -lm
 
-BIN = polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance
+BIN = polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance qtbool
 MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
-	man/qt2svg.1 man/qtcat.1 man/qtmesh.1 man/qtbalance.1
+	man/qt2svg.1 man/qtcat.1 man/qtmesh.1 man/qtbalance.1 man/qtbool.1
 MAN5 = man/qtree.5
 LIBOBJ = lib/msg.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
-	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o
+	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o lib/op.o
 
 all: $(BIN)
 
@@ -51,9 +51,12 @@ qtmesh: tools/qtmesh.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtmesh.o lib/libqtree.a $(LDLIBS)
 qtbalance: tools/qtbalance.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbalance.o lib/libqtree.a $(LDLIBS)
+qtbool: tools/qtbool.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbool.o lib/libqtree.a $(LDLIBS)
 $(POLYREADOBJ): lib/qtree.h tools/polyread/polyread.h
 tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
-tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o: lib/qtree.h
+tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o \
+tools/qtbool.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it.
