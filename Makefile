@@ -73,13 +73,18 @@ test: all tests/fmtcheck
 # (tests/gallery.bats fails when these files are stale) and the figures.
 # Then the finite-element mesh: balanced, conforming, around the hole.
 GALLERY = samples/amoeba-4.svg samples/amoeba-6.svg samples/amoeba-8.svg \
-	samples/amoeba-mesh.svg
+	samples/amoeba-mesh.svg samples/amoeba-disc.svg
 demo: all
 	for l in 4 6 8; do \
 	    ./polyread samples/amoeba.brep | ./qtsplit -l $$l | ./qt2svg \
 	    > samples/amoeba-$$l.svg || exit 1; done
 	./polyread samples/amoeba.brep | ./qtsplit -l 6 | ./qtbalance | \
 	    ./qtmesh | ./qt2svg -w 600 -b 8,8,14,14 > samples/amoeba-mesh.svg
+	t=$$(mktemp -d) && ./polyread samples/amoeba.brep | ./qtsplit -l 7 \
+	    > $$t/a && awk -v shape=disc -v n=64 -v cx=12 -v cy=10 -v r=2.5 \
+	    -f tools/genpoly.awk | ./polyread -u 4,4,12.2 | ./qtsplit -l 7 | \
+	    ./qtbool -o and $$t/a - | ./qt2svg > samples/amoeba-disc.svg; \
+	    s=$$?; rm -rf $$t; exit $$s
 	@echo "wrote $(GALLERY)"
 	./polyread samples/amoeba.brep | ./qtsplit -l 8 | ./qtstats
 
