@@ -131,7 +131,7 @@ clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
 	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
-	    tests/fuzz/qt2svg
+	    tests/fuzz/qt2svg tests/fuzz/qtbool
 	rm -f $(POLYREADOBJ)
 
 .PHONY: all test demo regress bench bench-peers sanitize fuzz install uninstall \
