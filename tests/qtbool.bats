@@ -381,7 +381,7 @@ bounds() {
 	done
 	[ "$(grep -c '^object' r6.qt)" -eq 32 ]
 	run -1 --separate-stderr qtbool -o or r6.qt "$(F sq3.qt)"
-	[ "$stderr" = "qtbool: $(F sq3.qt): 1 objects and r6.qt's 32: more than 32 in one stream" ]
+	[ "$stderr" = "qtbool: $(F sq3.qt): 1 object here and 32 in r6.qt: more than 32 in one stream" ]
 }
 
 @test "a bad option or operand is a usage error" {

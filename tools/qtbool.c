@@ -387,8 +387,9 @@ samehead(void)
 		    "%s:%ld has %.*s", (int)b->len, b->line, in[0].name,
 		    a->lineno, (int)a->len, a->line);
 	if (na + nb > QT_MAXOBJECTS)
-		errat(in[1].name, 0, "%ld objects and %s's %ld: more than "
-		    "%d in one stream", nb, in[0].name, na, QT_MAXOBJECTS);
+		errat(in[1].name, 0, "%ld object%s here and %ld in %s: more "
+		    "than %d in one stream", nb, nb > 1 ? "s" : "", na,
+		    in[0].name, QT_MAXOBJECTS);
 }
 
 int
