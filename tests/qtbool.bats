@@ -332,6 +332,26 @@ bounds() {
 	[[ "$output" != *$'\nend '* ]]
 }
 
+@test "a node at level 50, whose children no stream may hold, is refused" {
+	# the chain of nodes ., 0, 00, ... down to level 50, each node's other
+	# three children empty leaves, written after the chain, deepest first
+	awk 'BEGIN { print "qtree 1"; print "universe 0 0 1"
+	    for (k = 0; k <= 50; k++) {
+		p = k == 0 ? "." : sprintf("%0*d", k, 0)
+		printf "node %s %d 0 0 0 0 %.17g\n", p, k, 2 ^ -k
+	    }
+	    for (k = 50; k >= 1; k--) {
+		q = k == 1 ? "" : sprintf("%0*d", k - 1, 0); h = 2 ^ -k
+		printf "leaf %s1 %d 1 0 %.17g 0 %.17g E\n", q, k, h, h
+		printf "leaf %s2 %d 0 1 0 %.17g %.17g E\n", q, k, h, h
+		printf "leaf %s3 %d 1 1 %.17g %.17g %.17g E\n", q, k, h, h, h
+	    }
+	    print "end", 51 + 150 + 1 }' > deep.qt
+	qtstats deep.qt > /dev/null
+	run -1 --separate-stderr qtbool -o and deep.qt deep.qt
+	[ "$stderr" = "qtbool: deep.qt:53: not a whole tree: node $(printf '%050d' 0) lies at level 50, the deepest, and has no children" ]
+}
+
 @test "a truncated input is refused with its file and line, and no end record written" {
 	for n in 3 20 200; do
 		head -n $n "$(F d8.qt)" > cut.qt

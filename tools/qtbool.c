@@ -47,6 +47,7 @@ struct input {
 	struct qtreader	*r;
 	struct qtrec	 rec;	/* its next cell, QT_EOF after the last */
 	enum qtkind	 kind;
+	long		 lineno;	/* of the cell taken last */
 	/* the head: universe, level, and the records to write as read */
 	struct qtrec	*universe;
 	int		 level;		/* -1 for none */
@@ -87,6 +88,7 @@ classindex(char c)
 	return c == 'F' ? F : c == 'E' ? E : P;
 }
 
+/* The walk's path down to level, "." for the root. */
 static const char *
 pathname(int level)
 {
@@ -144,6 +146,7 @@ take(struct input *p, int level, uint64_t ix, uint64_t iy)
 		    "where cell %s comes in preorder", c->path,
 		    pathname(level));
 	class = c->class;
+	p->lineno = p->rec.lineno;
 	advance(p);
 	return class;
 }
@@ -262,8 +265,13 @@ walk(int level, uint64_t ix, uint64_t iy, char ca, char cb)
 		open[level].written = 0;
 		open[level].nheld = 0;
 	}
-	if (level == QT_MAXLEVEL)	/* the reader refuses deeper cells */
-		abort();
+	if (level == QT_MAXLEVEL) {	/* the reader refuses its children */
+		struct input *p = &in[ca == 0 ? 0 : 1];
+
+		errat(p->name, p->lineno, "not a whole tree: node %s lies at "
+		    "level %d, the deepest, and has no children",
+		    pathname(level), QT_MAXLEVEL);
+	}
 	for (q = 0; q < 4; q++) {
 		path[level] = '0' + q;
 		walk(level + 1, 2 * ix + (q & 1), 2 * iy + (q >> 1), ca, cb);
