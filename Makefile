@@ -9,13 +9,13 @@ CFLAGS = -O2 -g -Wall -Wextra
 QTCFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -ffp-contract=off -Ilib
 LDLIBS = -lm
 
-BIN = polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance
+BIN = polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance qtbool
 MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
-	man/qt2svg.1 man/qtcat.1 man/qtmesh.1 man/qtbalance.1
+	man/qt2svg.1 man/qtcat.1 man/qtmesh.1 man/qtbalance.1 man/qtbool.1
 MAN5 = man/qtree.5
 LIBOBJ = lib/msg.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
 	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
-	lib/pow5.o
+	lib/pow5.o lib/op.o
 
 all: $(BIN)
 
@@ -52,9 +52,12 @@ qtmesh: tools/qtmesh.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtmesh.o lib/libqtree.a $(LDLIBS)
 qtbalance: tools/qtbalance.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbalance.o lib/libqtree.a $(LDLIBS)
+qtbool: tools/qtbool.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbool.o lib/libqtree.a $(LDLIBS)
 $(POLYREADOBJ): lib/qtree.h tools/polyread/polyread.h
 tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
-tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o: lib/qtree.h
+tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o \
+tools/qtbool.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it; numcheck checks parsereal against strtod, numbench
@@ -83,13 +86,18 @@ test: all tests/fmtcheck tests/numcheck tools/genpow5 tests/rangecheck
 # (tests/gallery.bats fails when these files are stale) and the figures.
 # Then the finite-element mesh: balanced, conforming, around the hole.
 GALLERY = samples/amoeba-4.svg samples/amoeba-6.svg samples/amoeba-8.svg \
-	samples/amoeba-mesh.svg
+	samples/amoeba-mesh.svg samples/amoeba-disc.svg
 demo: all
 	for l in 4 6 8; do \
 	    ./polyread samples/amoeba.brep | ./qtsplit -l $$l | ./qt2svg \
 	    > samples/amoeba-$$l.svg || exit 1; done
 	./polyread samples/amoeba.brep | ./qtsplit -l 6 | ./qtbalance | \
 	    ./qtmesh | ./qt2svg -w 600 -b 8,8,14,14 > samples/amoeba-mesh.svg
+	t=$$(mktemp -d) && ./polyread samples/amoeba.brep | ./qtsplit -l 7 \
+	    > $$t/a && awk -v shape=disc -v n=64 -v cx=12 -v cy=10 -v r=2.5 \
+	    -f tools/genpoly.awk | ./polyread -u 4,4,12.2 | ./qtsplit -l 7 | \
+	    ./qtbool -o and $$t/a - | ./qt2svg > samples/amoeba-disc.svg; \
+	    s=$$?; rm -rf $$t; exit $$s
 	@echo "wrote $(GALLERY)"
 	./polyread samples/amoeba.brep | ./qtsplit -l 8 | ./qtstats
 
@@ -138,7 +146,7 @@ clean:
 	    tests/rangecheck \
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
-	    tests/fuzz/qt2svg
+	    tests/fuzz/qt2svg tests/fuzz/qtbool
 	rm -f $(POLYREADOBJ)
 
 .PHONY: all test demo regress bench bench-peers sanitize fuzz install uninstall \

@@ -133,7 +133,7 @@ void	 corners_point(const struct corners *, uint32_t, uint64_t *,
  */
 enum qtkind {
 	QT_EOF, QT_UNIVERSE, QT_LEVEL, QT_RING, QT_NODE, QT_LEAF,
-	QT_VERTEX, QT_ELEM, QT_OTHER
+	QT_VERTEX, QT_ELEM, QT_OBJECT, QT_OP, QT_OTHER
 };
 
 struct ring {
@@ -155,6 +155,15 @@ struct meshelem {		/* elem ID TYPE V1 V2 ... */
 	const unsigned long long *v;	/* vertex ids, each defined before */
 };
 
+/*
+ * A combined stream's op record (qtbool): its expression in prefix order,
+ * a term > 0 an object's number, < 0 an operator's code negated.
+ */
+struct qtop {
+	int		 n;
+	const int	*term;
+};
+
 struct qtrec {
 	enum qtkind	 kind;
 	const char	*line;	/* as read; a ring's v records follow it */
@@ -167,6 +176,8 @@ struct qtrec {
 	struct cell	 c;	/* QT_NODE, QT_LEAF */
 	struct meshvertex vertex;	/* QT_VERTEX */
 	struct meshelem	 elem;	/* QT_ELEM */
+	long		 object;	/* QT_OBJECT: its number */
+	struct qtop	 op;	/* QT_OP */
 };
 
 /*
@@ -196,6 +207,17 @@ int	 qt_next(struct qtreader *);
 const char *qt_name(const struct qtreader *);
 void	 qt_fail(const struct qtreader *, const char *, ...);
 void	 qt_close(struct qtreader *);
+
+/*
+ * op.c: the operators of combined streams.  qt_opcode gives 0 for a word
+ * that names none; qt_opterms checks an op record's words (see qtree(5))
+ * into terms and returns NULL, or a message.
+ */
+enum { QT_AND = 1, QT_OR, QT_MINUS, QT_XOR };
+#define QT_MAXOBJECTS	32	/* an op record's 63 terms, a line's 64 fields */
+int	 qt_opcode(const char *);
+const char *qt_opname(int);
+const char *qt_opterms(char *const *, int, long, int *);
 
 /*
  * split.c: the exact classifier of qtsplit(1), for any program that
@@ -244,6 +266,8 @@ void	 qt_gridvertex(unsigned long long, int, uint64_t, uint64_t);
 void	 qt_elem(unsigned long long, const char *, size_t,
 	    const unsigned long long *);
 void	 qt_hang(unsigned long long, unsigned long long, unsigned long long);
+void	 qt_object(long);
+void	 qt_op(const struct qtop *);
 void	 qt_echo(const struct qtrec *);
 struct qtrec *qt_keep(const struct qtrec *);
 void	 qt_free(struct qtrec *);

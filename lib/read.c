@@ -58,6 +58,10 @@ struct qtreader {
 	size_t		 ringcap, vleft;
 	long		 ringline;
 	struct buf	 ringtext;
+	/* a combined stream's objects so far, and its op record */
+	long		 nobjects;
+	int		 haveop;
+	int		 opterm[NFIELD];
 	/* the mesh read so far */
 	unsigned long long nvertex, nelem;
 	unsigned long long elemv[NFIELD];
@@ -554,6 +558,8 @@ ringrec(struct qtreader *r)
 		qt_fail(r, "ring record before the universe record");
 	if (r->havecells)
 		qt_fail(r, "ring record after cells");
+	if (r->haveop)
+		qt_fail(r, "ring record after the op record");
 	g->id = intfield(r, r->field[1], "ring id", 1, (long long)1 << 40);
 	if (g->id != r->nrings + 1)
 		qt_fail(r, "ring %ld follows ring %ld", g->id, r->nrings);
@@ -569,6 +575,44 @@ ringrec(struct qtreader *r)
 	r->nrings++;
 	r->ringline = r->lineno;
 	r->ringtext.len = 0;
+}
+
+/* An object of a combined stream: its rings are numbered from 1 again. */
+static void
+objectrec(struct qtreader *r, struct qtrec *rec)
+{
+	nfields(r, 2, 2);
+	if (r->havecells)
+		qt_fail(r, "object record after cells");
+	if (r->haveop)
+		qt_fail(r, "object record after the op record");
+	if (r->nobjects == 0 && r->nrings > 0)
+		qt_fail(r, "object record after rings of no object");
+	rec->object = intfield(r, r->field[1], "object", 1, QT_MAXOBJECTS);
+	if (rec->object != r->nobjects + 1)
+		qt_fail(r, "object %ld follows object %ld", rec->object,
+		    r->nobjects);
+	r->nobjects++;
+	r->nrings = 0;
+}
+
+static void
+oprec(struct qtreader *r, struct qtrec *rec)
+{
+	const char *msg;
+
+	if (r->nfield < 2)
+		qt_fail(r, "op record without an expression");
+	if (r->havecells)
+		qt_fail(r, "op record after cells");
+	if (r->haveop)
+		qt_fail(r, "second op record");
+	if ((msg = qt_opterms(r->field + 1, r->nfield - 1, r->nobjects,
+	    r->opterm)) != NULL)
+		qt_fail(r, "%s", msg);
+	rec->op.n = r->nfield - 1;
+	rec->op.term = r->opterm;
+	r->haveop = 1;
 }
 
 /* A vertex of the ring being read; the last one completes it. */
@@ -670,7 +714,8 @@ static const struct {
 	{ "leaf", 4, QT_LEAF }, { "node", 4, QT_NODE }, { "v", 1, QT_RING },
 	{ "ring", 4, QT_RING }, { "vertex", 6, QT_VERTEX },
 	{ "elem", 4, QT_ELEM }, { "level", 5, QT_LEVEL },
-	{ "universe", 8, QT_UNIVERSE },
+	{ "universe", 8, QT_UNIVERSE }, { "object", 6, QT_OBJECT },
+	{ "op", 2, QT_OP },
 };
 
 static enum qtkind
@@ -709,6 +754,8 @@ endrec(struct qtreader *r, const char *line)
 	if (count < 0 || (unsigned long long)count != r->count)
 		qt_fail(r, "end record counts %lld records, the stream "
 		    "has %llu", count, r->count);
+	if (r->nobjects > 0 && !r->haveop)
+		qt_fail(r, "objects without an op record");
 	if ((r->flags & (QT_CONCAT | QT_NEEDUNIVERSE)) ==
 	    (QT_CONCAT | QT_NEEDUNIVERSE) && !r->haveuniverse)
 		qt_fail(r, "no universe record");
@@ -774,6 +821,12 @@ body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 		break;
 	case QT_ELEM:
 		elemrec(r, rec);
+		break;
+	case QT_OBJECT:
+		objectrec(r, rec);
+		break;
+	case QT_OP:
+		oprec(r, rec);
 		break;
 	default:
 		break;
@@ -970,6 +1023,7 @@ qt_next(struct qtreader *r)
 	r->count = 0;
 	r->haveuniverse = r->havelevel = r->havecells = 0;
 	r->nrings = 0;
+	r->nobjects = r->haveop = 0;
 	r->nvertex = r->nelem = 0;
 	header(r, line);
 	return 1;

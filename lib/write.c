@@ -268,6 +268,43 @@ qt_hang(unsigned long long v, unsigned long long a, unsigned long long b)
 	recorded(p);
 }
 
+/* Object k of a combined stream; its rings follow. */
+void
+qt_object(long k)
+{
+	char *p = room(32);
+
+	memcpy(p, "object ", 7);
+	p = fmtint(p + 7, k);
+	*p++ = '\n';
+	recorded(p);
+}
+
+/* A combined stream's op record. */
+void
+qt_op(const struct qtop *op)
+{
+	char *p = room(8 + 8 * op->n);
+	int i;
+
+	memcpy(p, "op", 2);
+	p += 2;
+	for (i = 0; i < op->n; i++) {
+		*p++ = ' ';
+		if (op->term[i] > 0)
+			p = fmtint(p, op->term[i]);
+		else {
+			const char *name = qt_opname(-op->term[i]);
+			size_t n = strlen(name);
+
+			memcpy(p, name, n);
+			p += n;
+		}
+	}
+	*p++ = '\n';
+	recorded(p);
+}
+
 /* A record as read: a ring with its v records, anything else alone. */
 void
 qt_echo(const struct qtrec *rec)

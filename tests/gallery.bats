@@ -20,6 +20,98 @@ load test_helper
 		echo "samples/amoeba-mesh.svg is stale: run make demo"
 		return 1
 	}
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 7 > a7.qt
+	awk -v shape=disc -v n=64 -v cx=12 -v cy=10 -v r=2.5 \
+	    -f "$TOP/tools/genpoly.awk" | polyread -u 4,4,12.2 | qtsplit -l 7 |
+	    qtbool -o and a7.qt - | qt2svg > d.svg
+	cmp -s "$SAMPLES/amoeba-disc.svg" d.svg || {
+		echo "samples/amoeba-disc.svg is stale: run make demo"
+		return 1
+	}
+}
+
+# The README's recipe of the amoeba and the discs, as printed there, run
+# where tools/ and samples/ are at hand.
+discrecipe() {
+	ln -s "$TOP/tools" "$TOP/samples" .
+	sed -n '/^    polyread samples\/amoeba.brep > a.qt$/,/^$/p' "$TOP/README" |
+	    sed 's/^    //' > recipe.sh
+	[ "$(wc -l < recipe.sh)" -gt 10 ]
+	bash recipe.sh
+}
+
+@test "the README's table of two objects' overlap is what its recipe prints" {
+	discrecipe > got
+	sed -n '/^    # disc        level/,/^$/p' "$TOP/README" | sed '1d;$d' |
+	    sed 's/^    //' > want
+	[ "$(wc -l < want)" -eq 24 ]
+	diff -u want got
+}
+
+@test "the README's exact overlaps are the rings clipped by each disc, and lie in every bound" {
+	# Sutherland-Hodgman clipping of each ring by the (convex) disc in
+	# rational arithmetic: the signed area of a clipped ring is exact even
+	# where clipping leaves degenerate edges; the hole's part is taken off
+	cat > clip.py <<-'EOF'
+	import sys
+	from fractions import Fraction as Q
+	def rings(path):
+	    out = []
+	    for line in open(path):
+	        w = line.split()
+	        if w[0] == 'ring':
+	            out.append((w[2] == 'hole', []))
+	        elif w[0] == 'v':
+	            out[-1][1].append((Q(float(w[1])), Q(float(w[2]))))
+	    return out
+	def area(p):
+	    n = len(p)
+	    return sum(p[i][0] * p[(i + 1) % n][1] - p[(i + 1) % n][0] * p[i][1]
+	               for i in range(n)) / 2
+	def clip(subject, clipper):
+	    if area(clipper) < 0:
+	        clipper = clipper[::-1]
+	    out = subject
+	    for i in range(len(clipper)):
+	        a, b = clipper[i], clipper[(i + 1) % len(clipper)]
+	        def side(p):
+	            return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+	        inp, out = out, []
+	        for j in range(len(inp)):
+	            p, q = inp[j], inp[(j + 1) % len(inp)]
+	            sp, sq = side(p), side(q)
+	            if sp >= 0:
+	                out.append(p)
+	            if (sp >= 0) != (sq >= 0):
+	                t = sp / (sp - sq)
+	                out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
+	        if not out:
+	            return []
+	    return out
+	a, c = rings(sys.argv[1]), rings(sys.argv[2])
+	total = sum((-1 if hole else 1) * abs(area(clip(r, c[0][1]) or [(0, 0)]))
+	            for hole, r in a)
+	print("%.10g" % float(total))
+	EOF
+	# the clipping on the square and the triangle that meet in 1/2, by hand
+	printf '1 1\n3 1\n3 3\n1 3\n' | polyread -u 0,0,4 > s.qt
+	printf '0 0\n3 0\n0 3\n' | polyread -u 0,0,4 > t.qt
+	[ "$(python3 clip.py s.qt t.qt)" = 0.5 ]
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	for c in "7 10 2.5" "9.5 10 2.5" "12 10 2.5" "15.1 15.1 1"; do
+		set -- $c
+		awk -v shape=disc -v n=64 -v cx=$1 -v cy=$2 -v r=$3 \
+		    -f "$TOP/tools/genpoly.awk" | polyread -u 4,4,12.2 > d.qt
+		python3 clip.py a.qt d.qt
+	done > exact
+	[ "$(tr '\n' ' ' < exact)" = "16.87516729 14.0228895 12.58621378 0 " ]
+	grep -q '^(tests/gallery.bats), are 16.87516729, 14.0228895, 12.58621378 and 0:$' "$TOP/README"
+	# each disc's six levels, in the table its recipe prints
+	discrecipe > table
+	awk 'NR == FNR { x[NR] = $1; next }
+	    { k = int((FNR - 1) / 6) + 1
+	      if (!($5 <= x[k] && x[k] <= $6)) { print "out:", $0, x[k]; bad = 1 } }
+	    END { exit bad }' exact table
 }
 
 @test "the README's figures are qtstats's" {

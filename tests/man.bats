@@ -54,7 +54,7 @@ load test_helper
 }
 
 @test "every program's -h prints its usage line, which is its page's SYNOPSIS" {
-	for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance; do
+	for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance qtbool; do
 		run -0 --separate-stderr $p -h
 		[ -z "$stderr" ]
 		[ "${#lines[@]}" -eq 1 ]

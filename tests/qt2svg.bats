@@ -626,3 +626,20 @@ finemesh() {
 		[ "$output" != "#FFFFFF" ]
 	fi
 }
+
+@test "a combined stream: each object's rings in a colour of its own, a legend row each" {
+	# the squares 1..3 and 2..4 squared in 0..4, -w 100: 20 pixels a
+	# unit from (10, 90) up, so (1, 1) is at 30 70 and (4, 4) at 90 10
+	printf '1 1\n3 1\n3 3\n1 3\n' | polyread -u 0,0,4 | qtsplit -l 2 > a.qt
+	printf '2 2\n4 2\n4 4\n2 4\n' | polyread -u 0,0,4 | qtsplit -l 2 > b.qt
+	qtbool -o and a.qt b.qt | qt2svg -w 100 > ab.svg
+	[ "$(group object-1-outer-rings ab.svg)" = '<path d="M30 70 70 70 70 30 30 30 30 70"/>' ]
+	[ "$(group object-2-outer-rings ab.svg)" = '<path d="M50 50 90 50 90 10 50 10 50 50"/>' ]
+	grep -q '^<g id="object-1-outer-rings" fill="none" stroke="#000000" ' ab.svg
+	grep -q '^<g id="object-2-outer-rings" fill="none" stroke="#D55E00" ' ab.svg
+	grep -q '>object 1 outer rings 1<' ab.svg
+	grep -q '^<rect fill="none" stroke="#D55E00" .*/>$' ab.svg
+	grep -q '>object 2 outer rings 1<' ab.svg
+	! grep -q 'id="outer-rings"' ab.svg
+	if command -v xmllint > /dev/null; then xmllint --noout ab.svg; fi
+}

@@ -307,3 +307,46 @@ sameclasses() {
 	run -0 --separate-stderr qtbalance -v l.qt
 	[[ "${stderr_lines[${#stderr_lines[@]}-1]}" =~ ^qtbalance:\ 21\ cells\ read,\ 2\ leaves\ split,\ [0-9]+\ s$ ]]
 }
+
+@test "a combined stream's partial leaves split into partial children" {
+	# the triangle under x + y = 3 at level 1 (leaves 0, 1 and 2 partial,
+	# 3 empty) xor a dot around (1.5, 1.5) at level 3: partial xor
+	# anything is partial, so 0 is the dot's subtree, all partial, down to
+	# 030..033 at level 3, and 1, 2 stay partial leaves at level 1, two
+	# levels above 031 and 033, and 032 and 033, across their sides; 3
+	# touches 033 at a corner only.  The rings cannot classify the
+	# children of 1 and 2: partial, what the cells alone can say.
+	printf '0 0\n3 0\n0 3\n' | polyread -u 0,0,4 | qtsplit -l 1 > t.qt
+	awk 'BEGIN { for (i = 0; i < 16; i++) { t = 2 * 3.141592653589793 * i / 16
+	    printf "%.17g %.17g\n", 1.5 + 0.2 * cos(t), 1.5 + 0.2 * sin(t) } }' |
+	    polyread -u 0,0,4 | qtsplit -l 3 > d.qt
+	qtbool -o xor t.qt d.qt > x.qt
+	cat > want <<-'EOF'
+	node .
+	node 0
+	leaf 00 P
+	leaf 01 P
+	leaf 02 P
+	node 03
+	leaf 030 P
+	leaf 031 P
+	leaf 032 P
+	leaf 033 P
+	node 1
+	leaf 10 P
+	leaf 11 P
+	leaf 12 P
+	leaf 13 P
+	node 2
+	leaf 20 P
+	leaf 21 P
+	leaf 22 P
+	leaf 23 P
+	leaf 3 E
+	EOF
+	qtbalance x.qt > b.qt
+	awk '$1 == "node" { print $1, $2 } $1 == "leaf" { print $1, $2, $9 }' b.qt > got
+	diff -u want got
+	# the head passes as read, objects and op record
+	diff -u <(awk '$1 == "node" { exit } 1' x.qt) <(awk '$1 == "node" { exit } 1' b.qt)
+}

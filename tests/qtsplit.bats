@@ -362,6 +362,15 @@ colour red 1.50' > u.qt
 	[ "$stderr" = "qtsplit: t.qt:9: the input already holds cells: qtsplit takes rings" ]
 }
 
+@test "a combined stream is refused at its first object record" {
+	polyread "$FIXTURES/square.xy" | qtsplit -l 1 > t.qt
+	qtbool -o or t.qt t.qt | grep -v -E '^(node|leaf) ' | qtcat -u > c.qt
+	n=$(grep -n '^object 1$' c.qt | cut -d: -f1)
+	run -1 --separate-stderr qtsplit c.qt
+	[ "$stderr" = "qtsplit: c.qt:$n: the input combines objects (object record, from qtbool): qtsplit decomposes one polygon; split each and combine the trees" ]
+	[ -z "$output" ]
+}
+
 @test "every sample decomposes down to its level" {
 	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt "$SAMPLES"/*.poly; do
 		case $f in *.svg) continue ;; esac

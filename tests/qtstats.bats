@@ -605,3 +605,40 @@ value() {
 	sed -n '/^\$ printf/,/^\.Ed/p' "$page" | sed '1,2d;$d' > want
 	diff -u want got
 }
+
+@test "a combined stream: the cells' figures, the objects, and the ring figures named as left out" {
+	# the squares 1..3 and 2..4 squared in 0..4 at level 2: their and is
+	# the unit cell 2..3 squared, leaf 30, under node 3; quadrants 0, 1
+	# and 2 are empty leaves (the second square is empty there), so are
+	# 31, 32 and 33.  Its region is not the rings' even-odd interior.
+	printf '1 1\n3 1\n3 3\n1 3\n' | polyread -u 0,0,4 | qtsplit -l 2 > a.qt
+	printf '2 2\n4 2\n4 4\n2 4\n' | polyread -u 0,0,4 | qtsplit -l 2 > b.qt
+	cat > want <<-'EOF'
+	objects 2
+	rings 2
+	holes 0
+	# left out, the rings bound 2 objects combined: polygon_area perimeter centroid_x centroid_y area_full_relerr area_full_partial_relerr
+	universe_deepest_level 50
+	cells 9
+	nodes 2
+	leaves 7
+	leaves_F 1
+	leaves_E 6
+	leaves_P 0
+	deepest_level 2
+	uniform_cells 16
+	saving 0.4375
+	max_level_jump 1
+	area_full 1
+	area_full_partial 1
+	centroid_full_x 2.5
+	centroid_full_y 2.5
+	centroid_full_partial_x 2.5
+	centroid_full_partial_y 2.5
+	EOF
+	qtbool -o and a.qt b.qt | qtstats > got
+	diff -u want got
+	# -l: the relative errors' columns are left out too
+	run -0 bash -c 'qtbool -o and a.qt b.qt | qtstats -l | grep "^cut 2 "'
+	[ "$output" = "cut 2 1 6 0 1 1 - - 2.5 2.5 2.5 2.5" ]
+}

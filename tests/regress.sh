@@ -23,7 +23,7 @@ saved=tests/regress
 save=0
 [ "${1:-}" = -s ] && save=1
 
-for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance; do
+for p in polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance qtbool; do
 	[ -x "./$p" ] || { echo "regress: build first (make)" >&2; exit 2; }
 done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/regress.XXXXXX") || exit 2
@@ -83,7 +83,23 @@ cases() {
 		echo "$b.qtbalance|polyread $f | qtsplit -l 6 | qtbalance"
 		echo "$b.qtbalance-c|polyread $f | qtsplit -l 6 | qtbalance -c"
 		echo "$b.qtbalance-L|polyread $f | qtsplit -l 7 -L holes=3 -L 1=5 | qtbalance -c"
+		echo "$b.qtbool|polyread $f > \$W/p && qtsplit -l 6 \$W/p > \$W/a && qtsplit -l 4 -m 2 \$W/p > \$W/b && for o in and or minus xor; do qtbool -o \$o \$W/a \$W/b; qtbool -q -o \$o \$W/b \$W/a; echo \$o \$?; done"
 	done
+	# qtbool on two objects: the amoeba and a disc across it, and what
+	# the other programs make of the combined stream.
+	disc="awk 'BEGIN { for (i = 0; i < 64; i++) { t = 2 * 3.141592653589793 * i / 64; printf \"%.17g %.17g\\\\n\", 12 + 2.5 * cos(t), 10 + 2.5 * sin(t) } }' | polyread -u 4,4,12.2"
+	pair="polyread samples/amoeba.brep | qtsplit -l 7 > \$W/a && $disc | qtsplit -l 8 > \$W/d"
+	for o in and or minus xor; do
+		echo "amoeba-disc.qtbool-$o|$pair && qtbool -o $o \$W/a \$W/d"
+	done
+	echo "amoeba-disc.qtbool-q|$pair && for o in and or minus xor; do qtbool -q -o \$o \$W/a \$W/d; echo \$o \$?; done"
+	echo "amoeba-disc.qtbool-nested|$pair && qtbool -o and \$W/a \$W/d > \$W/ad && qtbool -o xor \$W/d \$W/ad"
+	echo "amoeba-disc.qtstats|$pair && qtbool -o and \$W/a \$W/d | qtstats -l"
+	echo "amoeba-disc.qt2svg|$pair && qtbool -o and \$W/a \$W/d | qt2svg -w 300"
+	echo "amoeba-disc.qtleaves|$pair && qtbool -o and \$W/a \$W/d | qtleaves -n"
+	echo "amoeba-disc.qtbalance|$pair && qtbool -o and \$W/a \$W/d | qtbalance | qtstats"
+	echo "amoeba-disc.qtsplit|$pair && qtbool -o and \$W/a \$W/d | qtsplit"
+	echo "amoeba16-disc16.qtbool|polyread samples/amoeba.brep | qtsplit -l 16 > \$W/a && $disc | qtsplit -l 16 > \$W/d && qtbool -o and \$W/a \$W/d | cksum"
 	# The readers' long way: numbers spelled otherwise than the writers do.
 	echo "odd.qtleaves|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtleaves -n -c FEP"
 	echo "odd.qtstats|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtstats -l"
@@ -109,7 +125,8 @@ cases() {
 		*.qt)
 			for p in qtsplit qtleaves qtstats qt2svg qtcat; do
 				echo "bad-$b.$p|$p $f"
-			done ;;
+			done
+			echo "bad-$b.qtbool|qtbool -o xor $f $f" ;;
 		*)	echo "bad-$b.polyread|polyread $f" ;;
 		esac
 	done

@@ -101,7 +101,7 @@ longrecord() {
 	qtsplit -l 8 a.qt > t.qt
 	for cmd in "polyread $SAMPLES/amoeba.brep" "qtsplit -l 8 a.qt" \
 	    "qtleaves t.qt" "qtleaves -n t.qt" "qtstats t.qt" "qt2svg t.qt" \
-	    "qtbalance t.qt"; do
+	    "qtbalance t.qt" "qtbool -o and t.qt t.qt"; do
 		run -1 --separate-stderr bash -c "$cmd > /dev/full"
 		[[ "$stderr" == "${cmd%% *}: write error: No space left on device" ]] ||
 		    { echo "$cmd: $stderr"; return 1; }
@@ -148,6 +148,9 @@ longrecord() {
 	valgrind -q --error-exitcode=9 --leak-check=no polyread "$SAMPLES/amoeba.brep" > a.qt
 	valgrind -q --error-exitcode=9 --leak-check=no qtsplit -l 8 a.qt > t.qt
 	tail -n 1 t.qt | grep -q '^end '
+	qtsplit -l 6 -m 3 a.qt > t6.qt
+	valgrind -q --error-exitcode=9 --leak-check=no qtbool -o xor t.qt t6.qt > b.qt
+	tail -n 1 b.qt | grep -q '^end '
 	run -1 valgrind -q --error-exitcode=9 polyread "$TOP/tests/bad/cross.xy"
 }
 

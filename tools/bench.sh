@@ -10,7 +10,8 @@
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
 # Then tools/benchshards.sh: the speed-up of shards made by GNU parallel
-# -j 2 over a single run; tools/benchir.sh: every program's
+# -j 2 over a single run; tools/benchbool.sh: qtbool on two level-16
+# trees against cat | wc -l on them; tools/benchir.sh: every program's
 # instructions a record, by callgrind, when valgrind is installed; and
 # tools/benchnum.sh: parsereal against strtod, a number at a time.
 #
@@ -410,6 +411,10 @@ fi
 # Shards over GNU parallel -j 2 against a single run, and what limits it.
 echo
 sh tools/benchshards.sh
+
+# qtbool on two level-16 trees against cat | wc -l on them.
+echo
+sh tools/benchbool.sh
 
 # Instructions a record, a figure that the machine's noise does not move.
 if command -v valgrind >/dev/null 2>&1; then

@@ -7,7 +7,8 @@
 #   sh tools/benchir.sh [dir]	the programs in dir (default: .)
 #
 # Inputs: the star of tools/genpoly.awk with N = 1000 (level 14) and
-# N = 100000 (polyread), the amoeba at level 14.
+# N = 100000 (polyread), the amoeba at level 14 (and, for qtbool, a disc
+# across it at level 14).
 set -u
 LC_ALL=C
 export LC_ALL
@@ -58,3 +59,15 @@ if [ -x "$dir/qtmesh" ]; then
 fi
 row "qtstats mesh14" "$(ir "$dir/qtstats" "$tmp/mesh14.qt")" "$nr"
 row "qt2svg mesh14" "$(ir "$dir/qt2svg" "$tmp/mesh14.qt")" "$nr"
+if [ -x "$dir/qtbool" ]; then
+	# the amoeba and a disc across it, both at level 14: records are
+	# those of both inputs
+	awk -v shape=disc -v n=64 -v cx=12 -v cy=10 -v r=2.5 \
+	    -f tools/genpoly.awk | "$dir/polyread" -u 4,4,12.2 |
+	    "$dir/qtsplit" -l 14 > "$tmp/disc14.qt"
+	nr=$(($(records "$tmp/amoeba14.qt") + $(records "$tmp/disc14.qt")))
+	row "qtbool and amoeba14 disc14" "$(ir "$dir/qtbool" -o and \
+	    "$tmp/amoeba14.qt" "$tmp/disc14.qt")" "$nr"
+	row "qtcat amoeba14" "$(ir "$dir/qtcat" "$tmp/amoeba14.qt")" \
+	    "$(records "$tmp/amoeba14.qt")"
+fi

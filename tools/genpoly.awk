@@ -13,6 +13,9 @@
 #	and every radius is at least 0.7 > 0.2 * sqrt(2), the hole's corners.
 #   awk -v shape=koch -v iter=5 -f tools/genpoly.awk
 #	a Koch snowflake after iter steps: 3 * 4^iter vertices.
+#   awk -v shape=disc -v n=64 -v cx=12 -v cy=10 -v r=2.5 -f tools/genpoly.awk
+#	a disc: n vertices on the circle of radius r around (cx, cy), from
+#	angle 0 counter-clockwise (the operands of qtbool's samples).
 #
 # The output is the same with any POSIX awk (mawk, gawk, nawk, busybox):
 # the random numbers come from our own generator rather than rand(), whose
@@ -24,8 +27,10 @@ BEGIN {
 		star(n + 0, seed == "" ? 1 : seed + 0, m == "" ? 32 : m + 0)
 	else if (shape == "koch")
 		koch(iter + 0)
+	else if (shape == "disc")
+		disc(n + 0, cx + 0, cy + 0, r + 0)
 	else
-		fail("shape must be star or koch")
+		fail("shape must be star, koch or disc")
 	exit 0
 }
 
@@ -74,6 +79,18 @@ function star(n, seed, m,    k, a, r, pi, t, i, f, w) {
 	print "-0.2 0.2"
 	print "0.2 0.2"
 	print "0.2 -0.2"
+}
+
+function disc(n, cx, cy, r,    k, a, pi) {
+	if (n < 3 || r <= 0)
+		fail("a disc needs n >= 3 and r > 0")
+	pi = atan2(0, -1)
+	printf "# disc, %d vertices, centre %.12g %.12g, radius %.12g\n",
+	    n, cx, cy, r
+	for (k = 0; k < n; k++) {
+		a = 2 * pi * k / n
+		printf "%.12g %.12g\n", cx + r * cos(a), cy + r * sin(a)
+	}
 }
 
 # Lattice coordinates: a step in direction d (a multiple of 60 degrees)

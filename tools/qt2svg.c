@@ -46,6 +46,13 @@ static const char *classcolour[NCLASS] = { "#0072B2", "#56B4E9", "#E69F00" };
 /* Ring styles, which the legend repeats. */
 static const char ringstyle[] = "stroke=\"#000000\" stroke-width=\"1.5\"";
 static const char holestyle[] = "stroke-dasharray=\"5 3\"";
+/*
+ * The rings of a combined stream's objects (qtbool), a stroke colour an
+ * object, in turn: black, then Okabe and Ito's vermillion, bluish green
+ * and reddish purple.
+ */
+static const char *objectcolour[] = { "#000000", "#D55E00", "#009E73",
+    "#CC79A7" };
 
 /* What the options ask for. */
 static struct options {
@@ -86,6 +93,7 @@ struct window {
 struct ringrec {
 	size_t	first, n;	/* in the vertex array */
 	int	hole;
+	long	object;		/* of a combined stream, else 0 */
 };
 
 /* The stream, as much of it as the picture needs. */
@@ -102,7 +110,8 @@ static struct picture {
 	size_t		 nrv, rvcap;
 	struct ringrec	*rings;
 	size_t		 nrings, ringcap;
-	long		 nring[2];	/* outer rings, holes */
+	long		 object;	/* the object being read, 0 for none */
+	long		 nring[QT_MAXOBJECTS + 1][2];	/* outer rings, holes */
 	struct point	*verts;		/* the mesh's vertices */
 	size_t		 nverts, vertcap;
 	unsigned long long *elems;	/* each: n, then n vertex ids */
@@ -531,8 +540,9 @@ ring(const struct ring *g)
 	r->first = pic.nrv;
 	r->n = g->n;
 	r->hole = g->hole;
+	r->object = pic.object;
 	pic.nrv += g->n;
-	pic.nring[g->hole != 0]++;
+	pic.nring[pic.object][g->hole != 0]++;
 }
 
 static void
@@ -793,28 +803,55 @@ drawring(struct ringpath *rp, const struct ringrec *r)
 	ringvertex(rp, x0, y0, 0);
 }
 
-static void
-rings(void)
+/* The style of object k's rings: the black one for k = 0, no object. */
+static const char *
+objectstyle(char *buf, size_t size, long k)
 {
-	char head[2][256];
+	if (k == 0)
+		return ringstyle;
+	snprintf(buf, size, "stroke=\"%s\" stroke-width=\"1.5\"",
+	    objectcolour[(k - 1) % (sizeof(objectcolour) /
+	    sizeof(objectcolour[0]))]);
+	return buf;
+}
+
+/* The outer rings, then the holes, of object k (0: of a polygon). */
+static void
+objectrings(long k)
+{
+	char head[2][256], style[64], id[32];
 	struct ringpath rp[2] = { { 0 }, { 0 } };
 	size_t i;
 	int h;
 
-	snprintf(head[0], sizeof(head[0]), "<g id=\"outer-rings\" "
+	id[0] = '\0';
+	if (k > 0)
+		snprintf(id, sizeof(id), "object-%ld-", k);
+	snprintf(head[0], sizeof(head[0]), "<g id=\"%souter-rings\" "
 	    "fill=\"none\" %s stroke-linejoin=\"round\" "
-	    "clip-path=\"url(#map)\">\n", ringstyle);
-	snprintf(head[1], sizeof(head[1]), "<g id=\"holes\" fill=\"none\" "
+	    "clip-path=\"url(#map)\">\n", id, objectstyle(style,
+	    sizeof(style), k));
+	snprintf(head[1], sizeof(head[1]), "<g id=\"%sholes\" fill=\"none\" "
 	    "%s %s stroke-linejoin=\"round\" clip-path=\"url(#map)\">\n",
-	    ringstyle, holestyle);
+	    id, objectstyle(style, sizeof(style), k), holestyle);
 	for (h = 0; h < 2; h++) {
 		rp[h].head = head[h];
 		for (i = 0; i < pic.nrings; i++)
-			if ((pic.rings[i].hole != 0) == h)
+			if ((pic.rings[i].hole != 0) == h &&
+			    pic.rings[i].object == k)
 				drawring(&rp[h], &pic.rings[i]);
 		if (rp[h].open)
 			outs("\"/>\n</g>\n");
 	}
+}
+
+static void
+rings(void)
+{
+	long k;
+
+	for (k = 0; k <= pic.object; k++)
+		objectrings(k);
 }
 
 static void
@@ -1135,8 +1172,9 @@ legendrows(void)
 
 	for (k = 0; k < NCLASS; k++)
 		n += opt.drawn[k];
-	return n + (pic.nring[0] > 0) + (pic.nring[1] > 0) +
-	    (pic.nelems > 0) + (pic.nverts > 0) + 2;
+	for (k = 0; k <= pic.object; k++)
+		n += (pic.nring[k][0] > 0) + (pic.nring[k][1] > 0);
+	return n + (pic.nelems > 0) + (pic.nverts > 0) + 2;
 }
 
 /*
@@ -1248,8 +1286,9 @@ legendscale(int row)
 static void
 legend(void)
 {
-	char swatch[256], text[32];
-	int k, row = 0;
+	char swatch[256], text[32], style[64];
+	long j;
+	int h, k, row = 0;
 
 	outs("<g id=\"legend\" font-family=\"sans-serif\" font-size=\"12\">\n");
 	for (k = 0; k < NCLASS; k++) {
@@ -1263,15 +1302,19 @@ legend(void)
 		legendrow(row++, swatch, text, pic.n[k]);
 	}
 	/* Ring and mesh swatches are squares drawn the way the map draws. */
-	if (pic.nring[0] > 0) {
-		snprintf(swatch, sizeof(swatch), "<rect fill=\"none\" %s",
-		    ringstyle);
-		legendrow(row++, swatch, "outer rings", pic.nring[0]);
-	}
-	if (pic.nring[1] > 0) {
-		snprintf(swatch, sizeof(swatch), "<rect fill=\"none\" %s %s",
-		    ringstyle, holestyle);
-		legendrow(row++, swatch, "holes", pic.nring[1]);
+	for (j = 0; j <= pic.object; j++) {
+		for (h = 0; h < 2; h++) {
+			if (pic.nring[j][h] == 0)
+				continue;
+			snprintf(swatch, sizeof(swatch), "<rect fill=\"none\" "
+			    "%s%s%s", objectstyle(style, sizeof(style), j),
+			    h ? " " : "", h ? holestyle : "");
+			if (j > 0)
+				snprintf(text, sizeof(text), "object %ld %s", j,
+				    h ? "holes" : "outer rings");
+			legendrow(row++, swatch, j > 0 ? text :
+			    h ? "holes" : "outer rings", pic.nring[j][h]);
+		}
 	}
 	if (pic.nelems > 0)
 		legendrow(row++, "<rect fill=\"none\" stroke=\"#000000\"",
@@ -1442,6 +1485,9 @@ main(int argc, char *argv[])
 			break;
 		case QT_RING:
 			ring(&rec.ring);
+			break;
+		case QT_OBJECT:
+			pic.object = rec.object;
 			break;
 		case QT_NODE:
 			seecell(&rec.c);

@@ -70,6 +70,7 @@ static struct classifier {
 	size_t		 n[QT_MAXLEVEL + 1];
 	int		 inside[QT_MAXLEVEL + 1];
 	size_t		 nrings;
+	int		 combined;	/* object records: the rings of several */
 } cl = { .depth = -1 };
 
 static void
@@ -231,6 +232,8 @@ partchildren(int level, uint64_t ix, uint64_t iy)
 	unsigned code = 0;
 	int parity[4], q;
 
+	if (cl.combined)	/* the cells alone cannot decide */
+		return PART | PART << 2 | PART << 4 | PART << 6;
 	if (cl.nrings == 0)
 		errat(t.name, 0, "leaf %s is partial and must be split, but "
 		    "the stream has no rings to classify its children",
@@ -388,6 +391,10 @@ readtree(struct qtreader *r)
 		case QT_RING:
 			split_addring(cl.sp, &rec.ring);
 			cl.nrings++;
+			qt_echo(&rec);
+			break;
+		case QT_OBJECT:
+			cl.combined = 1;
 			qt_echo(&rec);
 			break;
 		case QT_NODE:

@@ -508,7 +508,8 @@ sortcells(void)
 			do
 				hold(&in[i0]);
 			while (nextcell(&in[i0]));
-	qsort(held, nheld, sizeof(*held), heldcmp);
+	if (nheld > 0)	/* held is NULL without cells, which qsort may not take */
+		qsort(held, nheld, sizeof(*held), heldcmp);
 	memset(&c, 0, sizeof(c));
 	for (i = 0; i < nheld; i++) {
 		c.level = held[i].level;

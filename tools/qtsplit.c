@@ -214,6 +214,11 @@ readrings(struct qtreader *r)
 			qt_fail(r, "the input already holds cells: qtsplit "
 			    "takes rings");
 			break;
+		case QT_OBJECT:
+			qt_fail(r, "the input combines objects (object record, "
+			    "from qtbool): qtsplit decomposes one polygon; "
+			    "split each and combine the trees");
+			break;
 		default:
 			keep(&in.others, &in.nothers, &rec);
 			break;

@@ -20,6 +20,7 @@ static struct polygon {
 	struct moments	 region, ring;	/* all rings so far, the ring at hand */
 	unsigned long long nrings, nholes;
 	double		 perim, perimlow;	/* a compensated sum */
+	long		 nobjects;	/* of a combined stream, else 0 */
 } poly;
 
 /* Cells per level; sums of 2 IX + 1 and 2 IY + 1 for the centroids. */
@@ -370,6 +371,9 @@ readstream(struct qtreader *r)
 		case QT_RING:
 			ring(&rec.ring);
 			break;
+		case QT_OBJECT:
+			poly.nobjects = rec.object;
+			break;
 		case QT_NODE:
 		case QT_LEAF:
 			addcell(&rec.c);
@@ -633,14 +637,27 @@ cmptype(const void *a, const void *b)
 	    ((const struct etype *)b)->name);
 }
 
-/* Returns the polygon's area, 0 without rings. */
+/*
+ * Returns the polygon's area, 0 without rings.  The rings of a combined
+ * stream bound several objects, and its region is theirs combined, which
+ * the rings alone do not give: the figures of the region are left out.
+ */
 static double
 polygonfigures(void)
 {
 	double area = 0, cx, cy;
 
+	if (poly.nobjects > 0)
+		putcount("objects", poly.nobjects);
 	putcount("rings", poly.nrings);
 	putcount("holes", poly.nholes);
+	if (poly.nobjects > 0) {
+		printf("# left out, the rings bound %ld objects combined: "
+		    "polygon_area perimeter centroid_x centroid_y "
+		    "area_full_relerr area_full_partial_relerr\n",
+		    poly.nobjects);
+		return 0;
+	}
 	if (poly.nrings > 0) {
 		mo_result(&poly.region, &area, &cx, &cy);
 		putreal("polygon_area", area);

@@ -1,8 +1,8 @@
 #!/bin/sh
 # Fuzzes every parser: polyread in each of its formats and the qtree(5)
 # reader in every program that reads it (rings through qtsplit, cells
-# through qtstats, qtleaves -n, qtbalance, qtmesh and qtcat, meshes through
-# qt2svg), each built with AFL++ instrumentation and the address and
+# through qtstats, qtleaves -n, qtbalance, qtmesh, qtcat and qtbool, meshes
+# through qt2svg), each built with AFL++ instrumentation and the address and
 # undefined-behaviour sanitizers, for FUZZTIME seconds (default 60), or
 # about FUZZEXECS executions when that is set, from the seed corpus in
 # tests/fuzz/seeds.  Prints executions, crashes and hangs per target, and
@@ -34,6 +34,7 @@ build qtbalance tools/qtbalance.c
 build qtmesh tools/qtmesh.c
 build qtcat tools/qtcat.c
 build qt2svg tools/qt2svg.c
+build qtbool tools/qtbool.c
 
 # Containers have no CPU governor to check, may refuse CPU binding, and
 # may pipe core dumps elsewhere: none of that matters to a short run.
@@ -50,7 +51,7 @@ else
 	budget="-V $time"
 fi
 for target in brep xy wkt poly csv geojson qtree cells numbered balance \
-    qtmesh qtcat mesh; do
+    qtmesh qtcat qtbool mesh; do
 	case $target in
 	qtree)	set -- tests/fuzz/qtsplit -l 3 @@ ;;
 	cells)	set -- tests/fuzz/qtstats -l @@ ;;
@@ -58,6 +59,7 @@ for target in brep xy wkt poly csv geojson qtree cells numbered balance \
 	balance) set -- tests/fuzz/qtbalance -c @@ ;;
 	qtmesh)	set -- tests/fuzz/qtmesh -H @@ ;;
 	qtcat)	set -- tests/fuzz/qtcat @@ tests/fuzz/seeds/qtcat/shard.qt ;;
+	qtbool)	set -- tests/fuzz/qtbool -o xor @@ tests/fuzz/seeds/qtbool/tree.qt ;;
 	mesh)	set -- tests/fuzz/qt2svg @@ ;;
 	*)	set -- tests/fuzz/polyread -f "$target" @@ ;;
 	esac
