@@ -94,6 +94,12 @@ sanitize:
 regress: all
 	sh tests/regress.sh
 
+# Mutation testing, by hand and not in test: each mutant of
+# tests/mutants.txt applied alone to a scratch copy, built and tested
+# (minutes); the caught, the survivors and the score.
+mutate:
+	sh tests/mutate.sh
+
 # Times polyread and qtsplit on generated polygons and draws samples/bench.svg.
 bench: all
 	sh tools/bench.sh
@@ -119,4 +125,4 @@ clean:
 	    tests/fmtbench tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats
 	rm -f $(POLYREADOBJ)
 
-.PHONY: all test demo regress bench sanitize fuzz install uninstall clean
+.PHONY: all test demo regress mutate bench sanitize fuzz install uninstall clean

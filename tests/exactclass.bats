@@ -63,6 +63,33 @@ sameasexact() {
 	diff -u want got
 }
 
+@test "a universe inside a polygon, a hole touching its corner from outside: one full leaf" {
+	# qtree(5) lets rings reach past the universe: the universe 0 0 4 is
+	# a window on a square of side 12 around it, whose hole, the
+	# triangle below x + y = 0, meets the window at its corner (0,0)
+	# alone.  By hand: no edge meets the open window, whose centre (2,2)
+	# is inside the square and outside the hole
+	cat > w.qt <<-'EOF'
+	qtree 1
+	universe 0 0 4
+	ring 1 outer 4
+	v -4 -4
+	v 8 -4
+	v 8 8
+	v -4 8
+	ring 2 hole 3
+	v -2 2
+	v 2 -2
+	v -2 -2
+	end 10
+	EOF
+	echo 'leaf . 0 0 0 F' > want
+	splittree w.qt 3 > got
+	diff -u want got
+	python3 "$TOP/tests/exactclass.py" 3 w.qt > got
+	diff -u want got
+}
+
 @test "every sample and fixture at level 6: qtsplit's tree is the exact one" {
 	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt \
 	    "$SAMPLES"/*.poly "$FIXTURES"/*; do
