@@ -115,6 +115,12 @@ sanitize:
 regress: all
 	sh tests/regress.sh
 
+# Mutation testing, by hand and not in test: each mutant of
+# tests/mutants.txt applied alone to a scratch copy, built and tested
+# (minutes); the caught, the survivors and the score.
+mutate:
+	sh tests/mutate.sh
+
 # Times polyread and qtsplit on generated polygons and draws samples/bench.svg.
 bench: all tests/numbench
 	sh tools/bench.sh
@@ -149,5 +155,5 @@ clean:
 	    tests/fuzz/qt2svg tests/fuzz/qtbool
 	rm -f $(POLYREADOBJ)
 
-.PHONY: all test demo regress bench bench-peers sanitize fuzz install uninstall \
-	clean
+.PHONY: all test demo regress mutate bench bench-peers sanitize fuzz install \
+	uninstall clean

@@ -53,6 +53,68 @@ ring 3 outer 4
 ring 4 hole 4" ]
 }
 
+@test "xy: a hole whose first edge runs level with a vertex of its shell is a hole" {
+	# by hand: the ray from the hole's first vertex (2,5), nudged toward
+	# the second (4,5), runs through the shell's vertex (12,5), which
+	# counts as below it: of the shell's edges only (12,5)-(10,10) is
+	# crossed, once, so the hole is inside; the shell already runs
+	# counter-clockwise, the hole is reversed to run clockwise
+	printf '0 0\n10 0\n12 5\n10 10\n0 10\n\n2 5\n4 5\n3 7\n' > h.xy
+	cat > want <<-EOF
+	qtree 1
+	universe 0 0 12
+	ring 1 outer 5
+	v 0 0
+	v 10 0
+	v 12 5
+	v 10 10
+	v 0 10
+	ring 2 hole 3
+	v 3 7
+	v 4 5
+	v 2 5
+	end 11
+	EOF
+	polyread h.xy > got
+	diff -u want got
+}
+
+@test "xy: a collinear vertex on a ring's leftmost side does not decide its orientation" {
+	# by hand: the lowest of the leftmost vertices, (0,0) or (2,2), is a
+	# corner; (0,2) and (2,4) lie on the left sides, between two vertices
+	# of the same x; the square runs counter-clockwise as given, and so
+	# does its hole, which is reversed
+	printf '0 0\n4 0\n4 4\n0 4\n0 2\n' > s.xy
+	cat > want <<-EOF
+	qtree 1
+	universe 0 0 4
+	ring 1 outer 5
+	v 0 0
+	v 4 0
+	v 4 4
+	v 0 4
+	v 0 2
+	end 7
+	EOF
+	polyread s.xy > got
+	diff -u want got
+	# the same square clockwise is reversed to the same stream
+	printf '0 2\n0 4\n4 4\n4 0\n0 0\n' > cw.xy
+	polyread cw.xy > got
+	diff -u want got
+	printf '0 0\n8 0\n8 8\n0 8\n\n2 2\n6 2\n6 6\n2 6\n2 4\n' > h.xy
+	cat > want <<-EOF
+	ring 2 hole 5
+	v 2 4
+	v 2 6
+	v 6 6
+	v 6 2
+	v 2 2
+	EOF
+	polyread h.xy | sed -n '/^ring 2/,/^end/p' | sed '$d' > got
+	diff -u want got
+}
+
 @test "xy: the default universe is the bounding box squared up from its lower left" {
 	printf '1 2\n5 2\n5 4\n1 4\n' > wide.xy
 	run -0 polyread wide.xy
@@ -165,6 +227,13 @@ ring 3 outer 4" ]
 	[ "$stderr" = "polyread: -u: expected x0,y0,size: 1,2" ]
 	run -2 --separate-stderr polyread -l 99 "$FIXTURES/square.xy"
 	[[ "$stderr" == "polyread: -l: level must be an integer from 0 to "* ]]
+	# the ends of the ranges: levels 0 to 50, a size above 0
+	run -2 --separate-stderr polyread -l 51 "$FIXTURES/square.xy"
+	[ "$stderr" = "polyread: -l: level must be an integer from 0 to 50: 51" ]
+	run -0 polyread -l 50 "$FIXTURES/square.xy"
+	[ "${lines[2]}" = "level 50" ]
+	run -2 --separate-stderr polyread -u 0,0,0 "$FIXTURES/square.xy"
+	[ "$stderr" = "polyread: -u: expected x0,y0,size with size > 0: 0,0,0" ]
 }
 
 @test "-u wins over the universe a brep carries, and the rings stay as they were" {
@@ -181,6 +250,9 @@ ring 3 outer 4" ]
 	run -1 --separate-stderr polyread -u 0,0,2 "$FIXTURES/square.xy"
 	[ "$stderr" = "polyread: $FIXTURES/square.xy:3: vertex lies outside the universe given with -u" ]
 	[ -z "$output" ]
+	# below it: the square's first vertex, (1, 1) on line 2, under y0 2
+	run -1 --separate-stderr polyread -u 0,2,4 "$FIXTURES/square.xy"
+	[ "$stderr" = "polyread: $FIXTURES/square.xy:2: vertex lies outside the universe given with -u" ]
 }
 
 @test "fewer than 3 distinct vertices is an error" {
@@ -450,6 +522,18 @@ ring 3 hole 3" ]
 	echo '{"type":"Polygon","coordinates":[[[0,0,1,2],[4,0],[0,4],[0,0]]]}' > m.geojson
 	run -1 --separate-stderr polyread -f geojson m.geojson
 	[ "$stderr" = "polyread: m.geojson:1: position with more than 3 numbers" ]
+}
+
+@test "geojson: values nested 64 levels deep are read, 65 are not" {
+	# the object is level 1 and each of the 63 brackets of "x" one more:
+	# 64 levels; tests/bad/deep64.geojson has 64 brackets, 65 levels
+	{ printf '{"type": "Polygon", "coordinates": [[[0,0],[1,0],[0,1],[0,0]]], "x": '
+	  for i in $(seq 63); do printf '['; done
+	  for i in $(seq 63); do printf ']'; done; echo '}'; } > d.geojson
+	run -0 polyread d.geojson
+	[ "${lines[1]} ${lines[2]}" = "universe 0 0 1 ring 1 outer 3" ]
+	run -1 --separate-stderr polyread "$TOP/tests/bad/deep64.geojson"
+	[[ "$stderr" == *": JSON nested deeper than 64 levels"* ]]
 }
 
 @test "polyread(1): the GeoJSON example prints what the page says" {

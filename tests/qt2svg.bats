@@ -184,6 +184,17 @@ mesh() {
 	run -0 grep -c '^<svg .* width="100" height="[0-9]*" viewBox="0 0 100 ' upper.svg
 }
 
+@test "pixels are written in hundredths, halves rounded away from zero" {
+	# universe 0 0 4, -w 100 -m 10: 20 pixels per unit; the vertex
+	# (0.03125, 0.03125) falls at px 10 + 0.625 = 10.625 and py 10 +
+	# 20 * 3.96875 = 89.375, both exact in binary: 10.63 and 89.38
+	printf '0.03125 0.03125\n2 0.03125\n0.03125 2\n' > half.xy
+	polyread -u 0,0,4 half.xy | qt2svg -w 100 > half.svg
+	echo '<path d="M10.63 89.38 50 89.38 10.63 50 10.63 89.38"/>' > want
+	group outer-rings half.svg > got
+	diff -u want got
+}
+
 @test "a real renderer shows F and E cells and the hole in their colours" {
 	holed
 	qt2svg -w 180 holed.qt > holed.svg

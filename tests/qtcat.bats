@@ -134,6 +134,10 @@ whole() {
 	run -1 --separate-stderr qtcat top.qt $d/tri-S-1/*.qt
 	[ "$stderr" = "qtcat: $d/tri-S-1/0.qt:$m: cell $leaf given twice: also at top.qt:$n" ]
 	[[ "$output" != *end* ]]
+	# -u sorts the cells of all its inputs first, an earlier input's
+	# first among equal cells: the same message
+	run -1 --separate-stderr qtcat -u top.qt $d/tri-S-1/*.qt
+	[ "$stderr" = "qtcat: $d/tri-S-1/0.qt:$m: cell $leaf given twice: also at top.qt:$n" ]
 }
 
 @test "a missing shard is refused, naming the missing cell" {

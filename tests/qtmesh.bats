@@ -269,6 +269,31 @@ EOF
 	qtmesh ok.qt | awk -f "$TOP/tests/meshcheck.awk"
 }
 
+@test "a kept leaf two levels finer is found in either half of the node across a side" {
+	# the tree above with the kept leaf under node 20 at the west end of
+	# leaf 0's north side, 200, and 201 empty: by hand, 200 spans x 0 to
+	# 0.5 on y = 2, a stretch of that side, not a corner
+	cat > in.qt <<'EOF'
+qtree 1
+universe 0 0 4
+leaf 0 1 0 0 0 0 2 F
+leaf 1 1 1 0 2 0 2 E
+node 2 1 0 1 0 2 2
+node 20 2 0 2 0 2 1
+leaf 200 3 0 4 0 2 0.5 P
+leaf 201 3 1 4 0.5 2 0.5 E
+leaf 202 3 0 5 0 2.5 0.5 P
+leaf 203 3 1 5 0.5 2.5 0.5 P
+leaf 21 2 1 2 1 2 1 P
+leaf 22 2 0 3 0 3 1 E
+leaf 23 2 1 3 1 3 1 E
+leaf 3 1 1 1 2 2 2 E
+end 13
+EOF
+	run -1 --separate-stderr qtmesh in.qt
+	[ "$stderr" = "qtmesh: in.qt:3: leaf 0: kept leaves two or more levels finer touch its north side: the tree is not 2:1 balanced (qtbalance balances it)" ]
+}
+
 @test "-r: the same mesh, numbered anew, with a smaller bandwidth" {
 	twolevel "$SAMPLES/amoeba.brep" 5 > tree.qt
 	bw='$1 == "elem" { lo = hi = $4; for (k = 5; k <= NF; k++) {

@@ -238,6 +238,15 @@ uniform() {
 	diff -u want got
 }
 
+@test "-m may equal -l; one deeper is a usage error" {
+	polyread "$SAMPLES/invl.brep" > l.qt
+	# by hand: -m 2 -l 2 splits every cell to level 2: 16 leaves
+	[ "$(qtsplit -m 2 -l 2 l.qt | grep -c '^leaf')" -eq 16 ]
+	run -2 --separate-stderr qtsplit -m 3 -l 2 l.qt
+	[ "$stderr" = "qtsplit: -m 3 is deeper than the maximum level 2" ]
+	[ -z "$output" ]
+}
+
 @test "levels 0 to 30 work, and a level above the maximum is refused" {
 	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 0 | grep "^leaf"'
 	[ "$output" = "leaf . 0 0 0 4 4 12.2 P" ]

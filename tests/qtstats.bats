@@ -372,6 +372,34 @@ value() {
 	[ "$output" != "poly 4" ]
 }
 
+@test "an area halfway between two doubles rounds to the even one" {
+	# 321 x 28059810762433 = 9007199254740993 = 2^53 + 1 (by hand: 321 x
+	# 28059810762433 = 8417943228729900 + 589256026011093), halfway
+	# between the doubles 2^53 and 2^53 + 2; ties go to the even
+	# mantissa, 2^53 = 9007199254740992
+	printf '0 0\n321 0\n321 28059810762433\n0 28059810762433\n' > tie.xy
+	polyread tie.xy | qtstats > s
+	[ "$(value polygon_area s)" = 9007199254740992 ]
+}
+
+@test "the perimeter keeps short edges that a plain sum of a long one loses" {
+	# a rectangle 2^60 wide whose right side is 200 edges of 63: each 63
+	# is below half the spacing of doubles at 2^60 (256), so a plain sum
+	# drops it.  Exactly the perimeter is 2^61 + 25200; qtstats(1) says
+	# correct to a few units in the 16th digit, which is worth 1000 here:
+	# within 4000 of it (a plain sum gives 2^61 + 12800, 12400 short)
+	w=1152921504606846976
+	awk -v w=$w 'BEGIN { print "0 0"; print w, 0
+	    for (i = 1; i <= 200; i++) print w, 63 * i; print 0, 12600 }' > p.xy
+	polyread p.xy | qtstats > s
+	python3 -c '
+import sys
+from fractions import Fraction
+got = Fraction(sys.argv[1])
+exact = 2 ** 61 + 25200
+sys.exit(not abs(got - exact) <= 4000)' "$(value perimeter s)"
+}
+
 @test "area_full <= polygon_area <= area_full_partial on every sample and amoeba level" {
 	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt "$SAMPLES"/*.poly; do
 		polyread "$f" | qtsplit -l 6 | qtstats > s
@@ -463,6 +491,22 @@ value() {
 	EOF
 	polyread "$FIXTURES/invl.xy" | qtstats > got
 	diff -u want got
+}
+
+@test "uniform_cells is the integer 4^31 at level 31, a real at level 32" {
+	# the subtree of the triangle under the cell on its diagonal at level
+	# 30 (and 31): its leaves, at level 31 (32), on the hypotenuse; by
+	# hand 4^31 = 2^62 = 4611686018427387904, and 2^64 is the double
+	# that Python's repr, the shortest that reads back, prints
+	# 1.8446744073709552e+19
+	printf '0 0\n2 0\n0 2\n' > tri.xy
+	polyread tri.xy > t.qt
+	qtsplit -l 31 -r 1$(printf '2%.0s' $(seq 29)) t.qt | qtstats > s
+	[ "$(value deepest_level s)" = 31 ]
+	[ "$(value uniform_cells s)" = 4611686018427387904 ]
+	qtsplit -l 32 -r 1$(printf '2%.0s' $(seq 30)) t.qt | qtstats > s
+	[ "$(value deepest_level s)" = 32 ]
+	[ "$(value uniform_cells s)" = 1.8446744073709552e+19 ]
 }
 
 @test "past level 31 uniform_cells is written as a real" {

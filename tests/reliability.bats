@@ -66,6 +66,52 @@ bad_case() {
 	diff -u want got
 }
 
+@test "coordinates of magnitude 1e-100 and 1e100 are read; a step past either is not" {
+	# qtree(5): a coordinate is 0 or 1e-100 to 1e100 in magnitude, ends
+	# included; 9.999999999999999e-101 and 1.0000000000000002e+100 are
+	# the doubles next to them outside (Python's math.nextafter)
+	printf '0 0\n1 1e-100\n0 1\n' > lo.xy
+	printf '0 0\n1e100 0\n0 1e100\n' > hi.xy
+	cat > want <<-'EOF'
+	qtree 1
+	universe 0 0 1
+	ring 1 outer 3
+	v 0 0
+	v 1 1e-100
+	v 0 1
+	end 5
+	EOF
+	polyread lo.xy > lo.qt
+	diff -u want lo.qt
+	cat > want <<-'EOF'
+	qtree 1
+	universe 0 0 1e+100
+	ring 1 outer 3
+	v 0 0
+	v 1e+100 0
+	v 0 1e+100
+	end 5
+	EOF
+	polyread hi.xy > hi.qt
+	diff -u want hi.qt
+	# a qtree reader takes both streams
+	qtsplit -l 1 lo.qt > /dev/null
+	qtsplit -l 1 hi.qt > /dev/null
+	msg='outside the supported range'
+	printf '0 0\n1 9.999999999999999e-101\n0 1\n' > lo.xy
+	run -1 --separate-stderr polyread lo.xy
+	[[ "$stderr" == "polyread: lo.xy:2: coordinate $msg"* ]]
+	printf '0 0\n1.0000000000000002e100 0\n0 1\n' > hi.xy
+	run -1 --separate-stderr polyread hi.xy
+	[[ "$stderr" == "polyread: hi.xy:2: coordinate $msg"* ]]
+	sed 's/^v 1 1e-100$/v 1 9.999999999999999e-101/' lo.qt > lo2.qt
+	run -1 --separate-stderr qtsplit lo2.qt
+	[ "$stderr" = "qtsplit: lo2.qt:5: y $msg (0 or 1e-100 to 1e100 in magnitude): 9.999999999999999e-101" ]
+	sed 's/^v 0 1e+100$/v 0 1.0000000000000002e+100/' hi.qt > hi2.qt
+	run -1 --separate-stderr qtsplit hi2.qt
+	[ "$stderr" = "qtsplit: hi2.qt:6: y $msg (0 or 1e-100 to 1e100 in magnitude): 1.0000000000000002e+100" ]
+}
+
 @test "a 10 MB number is refused without fuss" {
 	{ printf '0 0\n1 '; head -c 10000000 /dev/zero | tr '\0' 7; printf '\n0 1\n'; } > long.xy
 	run -1 --separate-stderr polyread long.xy
