@@ -63,10 +63,16 @@ checkring(const struct input *in, struct inring *r)
 	r->xmin = r->xmax = r->v[0].x;
 	r->ymin = r->ymax = r->v[0].y;
 	for (i = 1; i < r->n; i++) {
-		r->xmin = fmin(r->xmin, r->v[i].x);
-		r->xmax = fmax(r->xmax, r->v[i].x);
-		r->ymin = fmin(r->ymin, r->v[i].y);
-		r->ymax = fmax(r->ymax, r->v[i].y);
+		struct point v = r->v[i];
+
+		if (v.x < r->xmin)
+			r->xmin = v.x;
+		if (v.x > r->xmax)
+			r->xmax = v.x;
+		if (v.y < r->ymin)
+			r->ymin = v.y;
+		if (v.y > r->ymax)
+			r->ymax = v.y;
 	}
 }
 
@@ -183,6 +189,7 @@ connectivity(const struct input *in, const struct touch *touches,
  */
 struct strips {
 	double	 ymin, height;
+	size_t	 asked;		/* queries so far */
 	size_t	 k;
 	size_t	*start;		/* edges of strip j: edge[start[j]..start[j+1]) */
 	size_t	*edge;
@@ -250,7 +257,8 @@ contains(const struct inring *r, struct strips *st, struct point p,
 	size_t j, s;
 	int inside = 0;
 
-	if (r->n < 64)
+	/* strips cost about what eight queries of the whole ring do */
+	if (r->n < 64 || st->asked++ < 8)
 		return ring_contains(r->v, r->n, p, toward);
 	if (st->k == 0)
 		buildstrips(r, st);
