@@ -212,7 +212,7 @@ addvertex(struct input *in, struct inring *r, double x, double y, long line)
 		readerr(r->file, line, "coordinate outside the supported range "
 		    "(0, or 1e-100 to 1e100 in magnitude)");
 	if (r->n == r->cap) {
-		r->cap = r->cap ? 2 * r->cap : 16;
+		r->cap = r->cap ? 2 * r->cap : 4;
 		r->v = xreallocarray(r->v, r->cap, sizeof(*r->v));
 		r->line = xreallocarray(r->line, r->cap, sizeof(*r->line));
 	}

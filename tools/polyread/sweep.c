@@ -1,6 +1,7 @@
 /*
  * sweep.c: no two edges cross or overlap, and no ring touches itself;
- * where two rings touch is recorded for the connectivity check.
+ * where two rings touch is recorded for the connectivity check, and which
+ * ring each lies in for the roles.
  */
 #include <math.h>
 #include <stdint.h>
@@ -43,7 +44,8 @@ struct edge {
 
 /* The sweep's state, for the one check that runs at a time. */
 static const struct input *in;
-static const struct inring *rings;	/* in->rings */
+static struct inring *rings;		/* in->rings */
+static unsigned char *ccw;		/* each ring's orientation, once met */
 static size_t *first;			/* each ring's first edge */
 static struct edge *edges;
 static uint32_t root;
@@ -331,6 +333,7 @@ replace(uint32_t e, uint32_t g)
 }
 
 static uint32_t *here;		/* the edges that hold the vertex at hand */
+static uint32_t *on;		/* those of them that go on past it */
 static size_t nhere, herecap;
 
 static void
@@ -339,6 +342,7 @@ addhere(uint32_t k)
 	if (nhere == herecap) {
 		herecap = herecap ? 2 * herecap : 64;
 		here = xreallocarray(here, herecap, sizeof(*here));
+		on = xreallocarray(on, herecap, sizeof(*on));
 	}
 	here[nhere++] = k;
 }
@@ -426,6 +430,77 @@ locate(struct point p, uint32_t near, uint32_t *below)
 }
 
 /*
+ * Nesting: the sweep meets a ring first at its lowest-left vertex, where
+ * both its edges start and the ring lies between them.  Just past that
+ * vertex, the edge b just below the lower of the two has the same rings
+ * around it on its upper side as the new ring has: b's ring itself when
+ * that lies above b (b runs forward on a counter-clockwise ring, or
+ * backward on a clockwise one), else the rings around b's ring.  As rings
+ * do not cross, these are all the rings around the new one, and b's ring
+ * was met before.  k is an edge that goes on from p, b the edge below it.
+ */
+static void
+nest(uint32_t k, uint32_t b)
+{
+	struct inring *r = &rings[edges[k].ring], *q;
+
+	if (r->depth != -2)
+		return;		/* not a ring that starts at p */
+	r->depth = 0;
+	r->parent = -1;
+	if (b == NONE)
+		return;
+	q = &rings[edges[b].ring];
+	if (edges[b].fwd == ccw[edges[b].ring]) {
+		r->parent = edges[b].ring;
+		r->depth = q->depth + 1;
+	} else {
+		r->parent = q->parent;
+		r->depth = q->depth;
+	}
+}
+
+/*
+ * Rings that touch at p must not cross there, into each other.  Around p,
+ * counter-clockwise from straight down, come the edges that go on past p
+ * as the sweep line orders them just after p, bottom to top, then those
+ * that come to p from the left (or from straight below) as it ordered
+ * them just before p, top to bottom; an edge through p comes twice.  Each
+ * ring has two edges there, a ring touching itself having failed, and no
+ * ring's two may come between another's.  The first such crossing is told
+ * when the sweep is over, so that the sweep's own findings come first, as
+ * they did before this test was made.
+ */
+static uint32_t crossk[2] = { NONE, NONE };
+static struct point crossp;
+
+static void
+uncrossed(struct point p, const uint32_t *from, size_t nfrom,
+    const uint32_t *to, size_t nto)
+{
+	uint32_t *open = xreallocarray(NULL, nfrom + nto, sizeof(*open));
+	size_t i, j, nopen = 0;
+
+	for (i = 0; i < nto + nfrom; i++) {
+		uint32_t k = i < nto ? to[i] : from[nfrom - 1 - (i - nto)];
+
+		for (j = nopen; j > 0 && edges[open[j - 1]].ring !=
+		    edges[k].ring; j--)
+			;
+		if (j == 0)
+			open[nopen++] = k;
+		else if (j == nopen)
+			nopen--;
+		else if (crossk[0] == NONE) {
+			crossk[0] = k;
+			crossk[1] = open[nopen - 1];
+			crossp = p;
+		}
+	}
+	free(open);
+}
+
+/*
  * Passes the vertex p, where the edges leave[] start and, when it is not
  * NONE, the edge ending ends; near is an edge on the sweep line likely
  * close to p, or NONE.  Every edge that holds p (ending there, passing
@@ -474,24 +549,31 @@ sweepvertex(struct point p, uint32_t *leave, size_t nleave, uint32_t ending,
 	for (i = 0; i < nhere; i++)
 		for (j = i + 1; j < nhere; j++)
 			testpair(here[i], here[j]);
-	for (i = 0; i < nmid; i++)
-		removeedge(here[i]);
 	/*
 	 * What goes on past p: the edges that leave it, and at most one that
 	 * passes through, as two would have crossed or overlapped.
 	 */
 	for (i = n = 0; i < nhere; i++)
 		if (!samepoint(edges[here[i]].b, p))
-			here[n++] = here[i];
-	sortfrom(here, n, p);
+			on[n++] = here[i];
+	sortfrom(on, n, p);
+	for (i = 1; i < nhere; i++)
+		if (edges[here[i]].ring != edges[here[0]].ring) {
+			uncrossed(p, here, nmid, on, n);
+			break;
+		}
+	for (i = 0; i < nmid; i++)
+		removeedge(here[i]);
+	for (i = 0; i < n; i++)
+		nest(on[i], i > 0 ? on[i - 1] : below);
 	if (n == 0)
 		testneighbours(below, above);
 	else {
-		testneighbours(below, here[0]);
-		testneighbours(here[n - 1], above);
+		testneighbours(below, on[0]);
+		testneighbours(on[n - 1], above);
 	}
-	for (i = 0, t = below; i < n; t = here[i++])
-		insertabove(t, here[i]);
+	for (i = 0, t = below; i < n; t = on[i++])
+		insertabove(t, on[i]);
 }
 
 /*
@@ -627,6 +709,11 @@ sweep(uint32_t n)
 			uint32_t prev = k > first[r] ? k - 1 :
 			    k + rings[r].n - 1;
 
+			/* the ring's first vertex: its orientation there */
+			if (rings[r].depth == -1) {
+				ccw[r] = orient(ep(prev, 0), p, ep(k, 1)) > 0;
+				rings[r].depth = -2;
+			}
 			if (nleave + 2 > cap) {
 				cap = cap ? 2 * cap : 16;
 				leave = xreallocarray(leave, cap,
@@ -652,26 +739,31 @@ sweep(uint32_t n)
 	free(leave);
 	free(ord);
 	free(here);
-	here = NULL;
+	free(on);
+	here = on = NULL;
 	nhere = herecap = 0;
 }
 
 /*
- * Fails on the first crossing, overlap or ring touching itself; returns
- * the points where two rings touch, ntouch of them, for the caller to free.
+ * Fails on the first crossing, overlap or ring touching itself; sets each
+ * ring's depth and parent; returns the points where two rings touch,
+ * ntouch of them, for the caller to free.
  */
 struct touch *
-checkedges(const struct input *input, size_t *ntouch)
+checkedges(struct input *input, size_t *ntouch)
 {
 	struct touch *t;
 	size_t i, j, n = 0;
 
 	in = input;
-	rings = in->rings;
+	rings = input->rings;
 	first = xreallocarray(NULL, in->nrings + 1, sizeof(*first));
+	ccw = xreallocarray(NULL, in->nrings + 1, sizeof(*ccw));
 	for (i = 0; i < in->nrings; i++) {
 		first[i] = n;
 		n += rings[i].n;
+		rings[i].depth = -1;	/* not met yet */
+		rings[i].parent = -1;
 	}
 	if (n >= NONE)
 		die(1, "more than %lu vertices", (unsigned long)NONE - 1);
@@ -692,10 +784,14 @@ checkedges(const struct input *input, size_t *ntouch)
 			n++;
 		}
 	sweep(n);
+	if (crossk[0] != NONE)
+		edgefail(crossk[0], crossk[1], "crosses", crossp);
 	free(edges);
 	edges = NULL;
 	free(first);
 	first = NULL;
+	free(ccw);
+	ccw = NULL;
 	t = touches;
 	*ntouch = ntouches;
 	touches = NULL;
