@@ -45,6 +45,9 @@ struct touch {
 	struct point	p;
 };
 
+/* The longest line an input may have, but in WKT and GeoJSON. */
+#define LINEMAX		(1 << 20)
+
 /* One input file, read whole, and the scanner's place in it. */
 struct src {
 	const char	*name;
