@@ -577,16 +577,20 @@ sweepvertex(struct point p, uint32_t *leave, size_t nleave, uint32_t ending,
 }
 
 /*
- * The sweep's order of the vertices, by x, then y, then number: a radix
- * sort of x's bits, least significant digit first, which keeps the
- * numbers in order among equal keys; then each run of equal x by y.
+ * The sweep's order of the vertices, by x, then y, then number.  A radix
+ * sort, least significant digit first, of the top 32 bits of x (sign,
+ * exponent and 20 bits of mantissa, which tell most vertices apart) keeps
+ * the numbers in order among equal keys; the vertices' points are then
+ * gathered in that order, in a loop whose reads do not wait for one
+ * another, and each run of equal keys is put in order by its points.  The
+ * sweep reads the points in order from there.
  */
 #define DIGITBITS	11
-#define NDIGITS		((64 + DIGITBITS - 1) / DIGITBITS)
+#define NDIGITS		3	/* of DIGITBITS, to cover 32 */
 #define RADIX		((size_t)1 << DIGITBITS)
 
-/* Unsigned keys in the order of the doubles; -0 is 0. */
-static uint64_t
+/* Unsigned keys in the order of the doubles, -0 as 0, the top bits kept. */
+static uint32_t
 sortkey(double v)
 {
 	uint64_t u;
@@ -594,28 +598,35 @@ sortkey(double v)
 	if (v == 0)
 		v = 0;
 	memcpy(&u, &v, sizeof(u));
-	return u >> 63 ? ~u : u | (uint64_t)1 << 63;
+	return (u >> 63 ? ~u : u | (uint64_t)1 << 63) >> 32;
 }
+
+struct vertex {
+	struct point	 p;
+	uint32_t	 k;
+};
 
 static int
-cmpy(const void *a, const void *b)
+cmpvertex(const void *a, const void *b)
 {
-	uint32_t s = *(const uint32_t *)a, t = *(const uint32_t *)b;
-	double ys = ep(s, 0).y, yt = ep(t, 0).y;
+	const struct vertex *s = a, *t = b;
 
-	if (ys != yt)
-		return ys < yt ? -1 : 1;
-	return (s > t) - (s < t);
+	if (s->p.x != t->p.x)
+		return s->p.x < t->p.x ? -1 : 1;
+	if (s->p.y != t->p.y)
+		return s->p.y < t->p.y ? -1 : 1;
+	return (s->k > t->k) - (s->k < t->k);
 }
 
-static uint32_t *
+static struct vertex *
 sweeporder(uint32_t n)
 {
-	uint64_t *key = xreallocarray(NULL, n + 1, sizeof(*key));
-	uint64_t *key2 = xreallocarray(NULL, n + 1, sizeof(*key2)), *kt;
+	uint32_t *key = xreallocarray(NULL, n + 1, sizeof(*key));
+	uint32_t *key2 = xreallocarray(NULL, n + 1, sizeof(*key2)), *kt;
 	uint32_t *ord = xreallocarray(NULL, n + 1, sizeof(*ord));
 	uint32_t *ord2 = xreallocarray(NULL, n + 1, sizeof(*ord2)), *ot;
 	size_t (*count)[RADIX] = xreallocarray(NULL, NDIGITS, sizeof(*count));
+	struct vertex *v;
 	size_t i, j, k, d, sum;
 
 	memset(count, 0, NDIGITS * sizeof(*count));
@@ -646,26 +657,33 @@ sweeporder(uint32_t n)
 		kt = key, key = key2, key2 = kt;
 		ot = ord, ord = ord2, ord2 = ot;
 	}
+	free(count);
+	free(key2);
+	free(ord2);
+	v = xreallocarray(NULL, n + 1, sizeof(*v));
+	for (i = 0; i < n; i++) {
+		v[i].p = ep(ord[i], 0);
+		v[i].k = ord[i];
+	}
 	for (i = 0; i < n; i = j) {
 		for (j = i + 1; j < n && key[j] == key[i]; j++)
 			;
 		if (j - i > 16)
-			qsort(ord + i, j - i, sizeof(*ord), cmpy);
+			qsort(v + i, j - i, sizeof(*v), cmpvertex);
 		else
 			for (k = i + 1; k < j; k++) {
-				uint32_t v = ord[k];
+				struct vertex t = v[k];
 				size_t m;
 
-				for (m = k; m > i && cmpy(&ord[m - 1], &v) > 0; m--)
-					ord[m] = ord[m - 1];
-				ord[m] = v;
+				for (m = k; m > i && cmpvertex(&v[m - 1], &t) > 0;
+				    m--)
+					v[m] = v[m - 1];
+				v[m] = t;
 			}
 	}
-	free(count);
 	free(key);
-	free(key2);
-	free(ord2);
-	return ord;
+	free(ord);
+	return v;
 }
 
 /*
@@ -695,17 +713,18 @@ nearedge(uint32_t k, struct point p)
 static void
 sweep(uint32_t n)
 {
-	uint32_t *ord = sweeporder(n), *leave = NULL;
+	struct vertex *ord = sweeporder(n);
+	uint32_t *leave = NULL;
 	size_t cap = 0, i, g;
 
 	root = NONE;
 	for (i = 0; i < n; i = g) {
-		struct point p = ep(ord[i], 0);
+		struct point p = ord[i].p;
 		uint32_t ending = NONE;
 		size_t nleave = 0;
 
-		for (g = i; g < n && samepoint(ep(ord[g], 0), p); g++) {
-			uint32_t k = ord[g], r = edges[k].ring;
+		for (g = i; g < n && samepoint(ord[g].p, p); g++) {
+			uint32_t k = ord[g].k, r = edges[k].ring;
 			uint32_t prev = k > first[r] ? k - 1 :
 			    k + rings[r].n - 1;
 
@@ -734,7 +753,7 @@ sweep(uint32_t n)
 				ending = prev;
 		}
 		sweepvertex(p, leave, nleave, ending, ending != NONE ? NONE :
-		    nearedge(ord[i], p));
+		    nearedge(ord[i].k, p));
 	}
 	free(leave);
 	free(ord);
