@@ -26,11 +26,12 @@
  * of its edges end, they leave.  Only a vertex where no edge ends (both of
  * its edges start there, or it lies on another edge) is looked for: from
  * an edge of its ring a few vertices away when that is on the sweep line,
- * as it is often close, else from the treap's root.  Each treap node knows
- * its parent, so that neighbours and removals need no search either.
+ * as it is often close, else from the treap's root.  Each edge on the line
+ * knows its parent in the treap and its neighbours on the line, so that
+ * neither steps along the line nor removals need a search.
  *
  * Edges are numbered across the rings, ring after ring; edge k leaves
- * vertex k, and the numbers are 32 bits, which keeps an edge in 56 bytes.
+ * vertex k, and the numbers are 32 bits, which keeps an edge in 64 bytes.
  */
 #define NONE	UINT32_MAX
 
@@ -38,6 +39,7 @@ struct edge {
 	struct point	 a, b;		/* a the end the sweep reaches first */
 	uint32_t	 ring;
 	uint32_t	 kid[2], up;	/* treap links, or NONE */
+	uint32_t	 nb[2];		/* the next edge down and up the line */
 	uint32_t	 pri;		/* treap heap key */
 	unsigned char	 fwd;		/* a is the ring's vertex k */
 };
@@ -48,7 +50,7 @@ static struct inring *rings;		/* in->rings */
 static unsigned char *ccw;		/* each ring's orientation, once met */
 static size_t *first;			/* each ring's first edge */
 static struct edge *edges;
-static uint32_t root;
+static uint32_t root, bottom;
 static struct touch *touches;
 static size_t ntouches, touchcap;
 
@@ -268,37 +270,42 @@ rotateup(uint32_t x)
 static uint32_t
 step(uint32_t t, int dir)
 {
-	if (edges[t].kid[dir] != NONE) {
-		t = edges[t].kid[dir];
-		while (edges[t].kid[!dir] != NONE)
-			t = edges[t].kid[!dir];
-		return t;
-	}
-	while (edges[t].up != NONE && edges[edges[t].up].kid[dir] == t)
-		t = edges[t].up;
-	return edges[t].up;
+	return edges[t].nb[dir];
+}
+
+/* Makes a and b neighbours, a below b; either may be NONE. */
+static void
+join(uint32_t a, uint32_t b)
+{
+	if (a != NONE)
+		edges[a].nb[1] = b;
+	else
+		bottom = b;
+	if (b != NONE)
+		edges[b].nb[0] = a;
 }
 
 /* Puts x on the sweep line just above y, or lowest when y is NONE. */
 static void
 insertabove(uint32_t y, uint32_t x)
 {
-	uint32_t t;
+	uint32_t t, above = y == NONE ? bottom : edges[y].nb[1];
 	int d = 0;
 
 	edges[x].kid[0] = edges[x].kid[1] = NONE;
+	join(x, above);
+	join(y, x);
 	if (root == NONE) {
 		root = x;
 		edges[x].up = NONE;
 		return;
 	}
+	/* a leaf's place: y's right, or the left of the edge above */
 	if (y != NONE && edges[y].kid[1] == NONE) {
 		t = y;
 		d = 1;
 	} else
-		for (t = y == NONE ? root : edges[y].kid[1];
-		    edges[t].kid[0] != NONE; t = edges[t].kid[0])
-			;
+		t = above;
 	edges[t].kid[d] = x;
 	edges[x].up = t;
 	while (edges[x].up != NONE && edges[x].pri > edges[edges[x].up].pri)
@@ -317,6 +324,7 @@ removeedge(uint32_t x)
 		    edges[l].pri > edges[r].pri ? l : r);
 	}
 	setkid(edges[x].up, x, NONE);
+	join(edges[x].nb[0], edges[x].nb[1]);
 }
 
 /* The edge g takes e's place on the sweep line, and its priority. */
@@ -330,6 +338,8 @@ replace(uint32_t e, uint32_t g)
 			edges[edges[g].kid[d]].up = g;
 	edges[g].pri = edges[e].pri;
 	setkid(edges[e].up, e, g);
+	join(edges[e].nb[0], g);
+	join(g, edges[e].nb[1]);
 }
 
 static uint32_t *here;		/* the edges that hold the vertex at hand */
@@ -717,7 +727,7 @@ sweep(uint32_t n)
 	uint32_t *leave = NULL;
 	size_t cap = 0, i, g;
 
-	root = NONE;
+	root = bottom = NONE;
 	for (i = 0; i < n; i = g) {
 		struct point p = ord[i].p;
 		uint32_t ending = NONE;
