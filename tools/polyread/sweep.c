@@ -414,7 +414,7 @@ testneighbours(uint32_t lo, uint32_t hi)
 static uint32_t
 locate(struct point p, uint32_t near, uint32_t *below)
 {
-	uint32_t t, u, first = NONE;
+	uint32_t t, u, lowest = NONE;
 	int i, up;
 
 	if (near != NONE) {
@@ -433,10 +433,10 @@ locate(struct point p, uint32_t near, uint32_t *below)
 			*below = t;
 			t = edges[t].kid[1];
 		} else {
-			first = t;
+			lowest = t;
 			t = edges[t].kid[0];
 		}
-	return first;
+	return lowest;
 }
 
 /*
@@ -478,8 +478,8 @@ nest(uint32_t k, uint32_t b)
  * them just before p, top to bottom; an edge through p comes twice.  Each
  * ring has two edges there, a ring touching itself having failed, and no
  * ring's two may come between another's.  The first such crossing is told
- * when the sweep is over, so that the sweep's own findings come first, as
- * they did before this test was made.
+ * when the sweep is over, so that a crossing or overlap that the sweep
+ * finds further on, the plainer fault, is told instead.
  */
 static uint32_t crossk[2] = { NONE, NONE };
 static struct point crossp;
