@@ -368,6 +368,33 @@ ring 3 hole 3" ]
 	[ "$stderr" = "polyread: loop.xy:10: interior is disconnected: ring 3 touches the rings around it at 4 3 and elsewhere, closing a loop" ]
 }
 
+@test "rings that cross each other where they touch are an error" {
+	# ring 2 touches ring 1's side x = 4 at 4 2 and its corner 4 4, and
+	# goes out of it at the one and back in at the other: around 4 2 come,
+	# counter-clockwise, ring 2's edge out, ring 1's side up, ring 2's edge
+	# in, ring 1's side down
+	printf '0 0\n4 0\n4 4\n0 4\n\n4 2\n6 3\n4 4\n3 3\n' > cross.xy
+	run -1 --separate-stderr polyread cross.xy
+	[ "$stderr" = "polyread: cross.xy:9: ring 2 edge 4 (line 9) crosses ring 1 edge 2 (line 2) at 4 2" ]
+	# the same ring from another vertex
+	printf '0 0\n4 0\n4 4\n0 4\n\n3 3\n4 2\n6 3\n4 4\n' > cross2.xy
+	run -1 --separate-stderr polyread cross2.xy
+	[ "$stderr" = "polyread: cross2.xy:6: ring 2 edge 1 (line 6) crosses ring 1 edge 2 (line 2) at 4 2" ]
+	# a square's corner 2 2 inside a diamond, its sides out through the
+	# diamond's corners 2 4 and 4 2; around 2 4 come the diamond's edge 3
+	# down to 4 2, the square's side up, the diamond's edge 4 from 0 2, the
+	# square's side down
+	printf '0 2\n2 0\n4 2\n2 4\n\n2 2\n2 10\n10 10\n10 2\n' > diamond.xy
+	run -1 --separate-stderr polyread diamond.xy
+	[ "$stderr" = "polyread: diamond.xy:4: ring 1 edge 4 (line 4) crosses ring 2 edge 1 (line 6) at 2 4" ]
+	# rings that touch at a point without crossing stay valid
+	printf '0 0\n4 0\n4 4\n0 4\n\n4 2\n6 1\n6 3\n\n4 2\n3 3\n3 1\n' > kiss.xy
+	run -0 bash -c 'polyread kiss.xy | grep "^ring"'
+	[ "$output" = "ring 1 outer 4
+ring 2 outer 3
+ring 3 hole 3" ]
+}
+
 @test "a ring's vertex inside its own edge is a touch, and an error" {
 	# the notch from the top reaches down to 2 0, on edge 1; edges 4 and 5
 	# end there
@@ -636,6 +663,37 @@ ring 3 hole 3" ]
 	awk 'BEGIN { for (i = 0; i < 3000; i++) printf "%d 0\n%d 0\n%d 1\n\n", 3 * i, 3 * i + 1, 3 * i }' > row.xy
 	run -0 bash -c 'polyread row.xy | grep -c "^ring .* outer 3$"'
 	[ "$output" = 3000 ]
+}
+
+@test "roles by nesting: stacks of nested squares side by side and one above another" {
+	# a 12 x 12 square holds a 4 x 4 grid of cells, cell (i, j) a stack of
+	# (i + j) % 4 + 1 nested squares; a square inside d others is an outer
+	# ring when d is even, a hole when odd; awk writes each ring's depth as
+	# it writes the ring
+	awk 'function sq(x, y, s, d) {
+		printf "%g %g\n%g %g\n%g %g\n%g %g\n\n", x, y, x + s, y, x + s, y + s, x, y + s
+		print d > "depth" }
+	    BEGIN { sq(0, 0, 12, 0)
+		for (i = 0; i < 4; i++) for (j = 0; j < 4; j++)
+		    for (k = 0; k <= (i + j) % 4; k++)
+			sq(1 + 2.75 * i + 0.25 * k, 1 + 2.75 * j + 0.25 * k, 2.5 - 0.5 * k, k + 1) }' > stacks.xy
+	run -0 bash -c 'polyread stacks.xy | awk "\$1 == \"ring\" { print \$3 }"'
+	[ "$output" = "$(awk '{ print $1 % 2 ? "hole" : "outer" }' depth)" ]
+	[ "${#lines[@]}" -eq 41 ]
+}
+
+@test "10^5 nested squares read in bounded memory, outer and hole by turns" {
+	# contour lines: square i has the i squares before it around it, so it
+	# is an outer ring, counter-clockwise, when i is even and a hole,
+	# clockwise, when odd (polyread(1), xy); 2 * 10^4 of them took 3 GB
+	awk -v n=100000 'BEGIN { for (i = 0; i < n; i++) { a = i; b = 4 * n - i
+	    printf "%d %d\n%d %d\n%d %d\n%d %d\n\n", a, a, b, a, b, b, a, b } }' > nest.xy
+	run -0 bash -c 'ulimit -v 400000; polyread nest.xy > nest.qt'
+	run -0 awk -f "$TOP/tests/ringsigns.awk" nest.qt
+	run -0 awk '{ i = $1 - 1; want = i % 2 ? "hole cw" : "outer ccw"
+	    if ($2 " " $3 != want) { print "ring", $1, $2, $3; exit 1 } }
+	    END { print NR }' <<<"$output"
+	[ "$output" = 100000 ]
 }
 
 @test "round trip: qtree rings back to brep read to the same stream" {

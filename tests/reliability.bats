@@ -112,11 +112,14 @@ bad_case() {
 	[ "$stderr" = "qtsplit: hi2.qt:6: y $msg (0 or 1e-100 to 1e100 in magnitude): 1.0000000000000002e+100" ]
 }
 
-@test "a 10 MB number is refused without fuss" {
-	{ printf '0 0\n1 '; head -c 10000000 /dev/zero | tr '\0' 7; printf '\n0 1\n'; } > long.xy
+@test "a 1 MB number is refused without fuss, a 10 MB line too" {
+	{ printf '0 0\n1 '; head -c 1000000 /dev/zero | tr '\0' 7; printf '\n0 1\n'; } > long.xy
 	run -1 --separate-stderr polyread long.xy
 	[[ "$stderr" == "polyread: long.xy:2: number out of range: 777"* ]]
 	[ "${#stderr}" -lt 200 ]
+	{ printf '0 0\n1 '; head -c 10000000 /dev/zero | tr '\0' 7; printf '\n0 1\n'; } > longer.xy
+	run -1 --separate-stderr polyread longer.xy
+	[ "$stderr" = "polyread: longer.xy:2: line longer than 1048576 bytes (only WKT and GeoJSON may have longer lines)" ]
 }
 
 # qtree(5): a line holds at most 1048576 bytes before its newline.
@@ -140,6 +143,43 @@ longrecord() {
 		run -1 --separate-stderr bash -c "ulimit -v 100000; yes x | tr -d '\n' | $p"
 		[ "$stderr" = "$p: stdin:1: line longer than 1048576 bytes" ]
 	done
+}
+
+@test "polyread stops at a NUL byte and at a line without end, in bounded memory" {
+	# both would be read whole before: /dev/zero without end
+	run -1 --separate-stderr bash -c 'ulimit -v 50000; polyread /dev/zero'
+	[ "$stderr" = "polyread: /dev/zero:1: NUL byte in input" ]
+	run -1 --separate-stderr bash -c 'ulimit -v 50000
+	    yes 2>/dev/null | tr -d "\n" 2>/dev/null | head -c 100000000 | polyread'
+	[ "$stderr" = "polyread: stdin:1: line longer than 1048576 bytes (only WKT and GeoJSON may have longer lines)" ]
+	# a NUL after two lines is on line 3, whatever follows
+	run -1 --separate-stderr bash -c 'ulimit -v 50000
+	    { printf "0 0\n1 0\n0 "; cat /dev/zero; } | polyread'
+	[ "$stderr" = "polyread: stdin:3: NUL byte in input" ]
+}
+
+@test "a line may hold 1048576 bytes, one more only in WKT and GeoJSON" {
+	{ printf '#'; head -c 1048575 /dev/zero | tr '\0' x
+	    printf '\n0 0\n1 0\n0 1\n'; } > edge.xy
+	run -0 bash -c 'polyread edge.xy | grep "^ring"'
+	[ "$output" = "ring 1 outer 3" ]
+	{ printf '0 0\n1 0\n0 1\n#'; head -c 1048576 /dev/zero | tr '\0' x; } > over.xy
+	run -1 --separate-stderr polyread over.xy
+	[ "$stderr" = "polyread: over.xy:4: line longer than 1048576 bytes (only WKT and GeoJSON may have longer lines)" ]
+	# a zigzag of 150002 vertices on one line of 1.4 MB, in WKT and GeoJSON
+	awk 'BEGIN { printf "POLYGON ((0 0"
+	    for (k = 1; k < 150000; k++) printf ", %d %d", k, k % 2
+	    printf ", 149999 5, 0 5, 0 0))" }' > one.wkt
+	run -0 bash -c 'polyread one.wkt | grep "^ring"'
+	[ "$output" = "ring 1 outer 150002" ]
+	awk 'BEGIN { printf "{\"type\": \"Polygon\", \"coordinates\": [[[0, 0]"
+	    for (k = 1; k < 150000; k++) printf ", [%d, %d]", k, k % 2
+	    printf ", [149999, 5], [0, 5], [0, 0]]]}" }' > one.geojson
+	run -0 bash -c 'polyread one.geojson | grep "^ring"'
+	[ "$output" = "ring 1 outer 150002" ]
+	[ "$(wc -l < one.wkt) $(wc -l < one.geojson)" = "0 0" ]
+	[ "$(wc -c < one.wkt)" -gt 1048576 ]
+	[ "$(wc -c < one.geojson)" -gt 1048576 ]
 }
 
 @test "output to a full disk is an error with a message, from every program" {

@@ -1,11 +1,12 @@
 #!/bin/sh
-# bench.sh: time polyread and qtsplit on generated polygons, and qtleaves,
+# bench.sh: time polyread and qtsplit on generated polygons, polyread
+# alone on a jagged star and a circle of 10^6 vertices, and qtleaves,
 # qtstats and qt2svg on the largest level-16 stream, qtcat merging two
 # shards of it against cat | wc -l, qtmesh on a balanced level-16 tree
 # (elements/s in the cells_per_s column) and qtbalance on the level-16
 # amoeba (leaves/s and peak RSS a leaf), print a table and the targets of
 # issue 3 (and 17's of qtcat, 10's of qtmesh and qtbalance, 16's of
-# qt2svg) with their figures, and draw samples/bench.svg.
+# qt2svg, 11's of polyread) with their figures, and draw samples/bench.svg.
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
@@ -318,6 +319,29 @@ for n in 1000 100000; do
 	deep "$n"
 done
 
+# alone POLY N XY: polyread alone on XY, a row without cells.
+alone() {
+	peak ./polyread "$3" >/dev/null || die "polyread rejects $1 N=$2"
+	m=$(rss)
+	t=$(timeit "$runs" "./polyread $3")
+	row "$1" "$2" - polyread - "$t" "$m"
+}
+
+# polyread alone on the sweep's hard case and its easy one (issue 11), N =
+# 10^6: a jagged star (genpoly, m = 0: each radius drawn on its own, so
+# that the sweep line crosses up to 10^5 edges at once) and a circle (two).
+if [ "$maxn" -ge 1000000 ]; then
+	awk -v shape=star -v n=1000000 -v m=0 -f tools/genpoly.awk \
+	    >"$tmp/jagged.xy" || die "genpoly failed"
+	alone jagged 1000000 "$tmp/jagged.xy"
+	awk -v n=1000000 'BEGIN { pi = atan2(0, -1)
+	    for (k = 0; k < n; k++)
+		printf "%.12g %.12g\n", cos(2 * pi * k / n), sin(2 * pi * k / n)
+	}' >"$tmp/circle.xy"
+	alone circle 1000000 "$tmp/circle.xy"
+	rm -f "$tmp/jagged.xy" "$tmp/circle.xy"
+fi
+
 # balance: qtbalance on the amoeba at level 16, timed on the saved tree;
 # leaves/s counts the input's leaves, RSS is per leaf of the output.  Kept
 # in $tmp/balance for the targets.
@@ -514,6 +538,11 @@ END {
 		skip(name)
 	else
 		verdict(name, sprintf("%d KB", m), m < 65536 ? "PASS" : "FAIL")
+
+	timecap("polyread, jagged star N=10^6 < 1 s (issue 11)",
+	    "jagged 1000000 - polyread", 1)
+	timecap("polyread, circle N=10^6 < 1 s (issue 11)",
+	    "circle 1000000 - polyread", 1)
 
 	k = "amoeba - 16 qtmesh"
 	name = "qtmesh, balanced level 16, >= 1 M elements/s"

@@ -46,6 +46,9 @@ struct touch {
 	struct point	p;
 };
 
+/* The longest line an input may have, but in WKT and GeoJSON. */
+#define LINEMAX		(1 << 20)
+
 /* One input file, read whole, and the scanner's place in it. */
 struct src {
 	const char	*name;
@@ -106,14 +109,14 @@ int	 isgeojson(const struct src *);
 void	 parsegeojson(struct src *, struct input *);
 void	 choosefeature(const char *);
 
-/* valid.c: each ring alone, how rings nest, the universe, orientation */
+/* valid.c: each ring alone, roles and connectivity, universe, orientation */
 long	 ringno(const struct input *, const struct inring *);
 void	 checkrings(struct input *);
-void	 checknesting(struct input *, const struct touch *, size_t);
+void	 checknesting(const struct input *, const struct touch *, size_t);
 void	 defaultuniverse(const struct input *, struct universe *);
 void	 checkuniverse(const struct input *, const struct universe *,
 	    const char *);
 void	 orientrings(struct input *);
 
-/* sweep.c: no two edges cross or overlap; where rings touch */
-struct touch *checkedges(const struct input *, size_t *);
+/* sweep.c: no two edges cross or overlap; where rings touch; nesting */
+struct touch *checkedges(struct input *, size_t *);

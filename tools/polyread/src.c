@@ -9,25 +9,97 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
 
 #include "qtree.h"
 #include "polyread.h"
 
+/* The line of the byte at p, counting from the start of the input. */
+static long
+lineat(const struct src *s, const char *p)
+{
+	const char *q;
+	long line = 1;
+
+	for (q = s->buf; (q = memchr(q, '\n', p - q)) != NULL; q++)
+		line++;
+	return line;
+}
+
+/*
+ * Whether the input may have lines longer than LINEMAX: it is GeoJSON or
+ * WKT, as its first data shows, '{' or a word that starts WKT.
+ */
+static int
+longlines(const struct src *s)
+{
+	static const char *const words[] = { "POLYGON", "MULTIPOLYGON",
+	    "SRID" };
+	const char *p = s->buf, *end = s->buf + s->len;
+	size_t i, n;
+
+	if (s->len >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
+		p += 3;
+	while (p < end && (isspace((unsigned char)*p) || *p == '#'))
+		if (*p++ == '#')
+			while (p < end && *p != '\n')
+				p++;
+	if (p < end && *p == '{')
+		return 1;
+	for (n = 0; p + n < end && isalpha((unsigned char)p[n]); n++)
+		;
+	for (i = 0; i < sizeof(words) / sizeof(words[0]); i++)
+		if (n == strlen(words[i]) && strncasecmp(p, words[i], n) == 0)
+			return 1;
+	return 0;
+}
+
+/*
+ * Reads an input whole, checking each block as it comes, so that neither
+ * a NUL byte nor a line without end makes it read on: a block holds at
+ * most LINEMAX bytes, so a longer line runs past a block's end.
+ */
 void
 readall(struct src *s, const char *path)
 {
 	FILE *fp = openin(path, &s->name);
-	size_t cap = 1 << 16, n;
-	char *nul;
+	size_t cap = 1 << 16, n, start = 0;	/* of the line being read */
+	int longok = 0;
+	struct stat st;
+	char *p, *nl;
 
+	/* a file says how long it is, which spares copying as it grows */
+	if (fstat(fileno(fp), &st) == 0 && S_ISREG(st.st_mode) &&
+	    st.st_size > 0 && (uintmax_t)st.st_size < SIZE_MAX / 2)
+		cap = (size_t)st.st_size + 2;
 	s->buf = xmalloc(cap);
 	s->len = 0;
-	while ((n = fread(s->buf + s->len, 1, cap - s->len - 1, fp)) > 0) {
-		s->len += n;
+	for (;;) {
 		if (cap - s->len - 1 == 0) {
 			cap *= 2;
 			s->buf = xreallocarray(s->buf, cap, 1);
 		}
+		n = cap - s->len - 1;
+		if ((n = fread(s->buf + s->len, 1, n < LINEMAX ? n : LINEMAX,
+		    fp)) == 0)
+			break;
+		p = s->buf + s->len;
+		s->len += n;
+		if ((nl = memchr(p, '\0', n)) != NULL)
+			errat(s->name, lineat(s, nl), "NUL byte in input");
+		if (longok)
+			continue;
+		nl = memchr(p, '\n', n);
+		if ((nl != NULL ? (size_t)(nl - s->buf) : s->len) - start >
+		    LINEMAX && !(longok = longlines(s)))
+			errat(s->name, lineat(s, s->buf + start), "line longer "
+			    "than %d bytes (only WKT and GeoJSON may have "
+			    "longer lines)", LINEMAX);
+		for (nl = s->buf + s->len; nl > p && nl[-1] != '\n'; nl--)
+			;
+		if (nl > p)
+			start = nl - s->buf;
 	}
 	if (ferror(fp))
 		die(1, "%s: read error: %s", s->name, strerror(errno));
@@ -38,14 +110,6 @@ readall(struct src *s, const char *path)
 	if (s->len >= 3 && memcmp(s->buf, "\xef\xbb\xbf", 3) == 0) {
 		s->len -= 3;
 		memmove(s->buf, s->buf + 3, s->len + 1);
-	}
-	if ((nul = memchr(s->buf, '\0', s->len)) != NULL) {
-		long line = 1;
-		char *q;
-
-		for (q = s->buf; q < nul; q++)
-			line += *q == '\n';
-		errat(s->name, line, "NUL byte in input");
 	}
 	s->p = s->buf;
 	s->line = 1;
@@ -212,7 +276,7 @@ addvertex(struct input *in, struct inring *r, double x, double y, long line)
 		readerr(r->file, line, "coordinate outside the supported range "
 		    "(0, or 1e-100 to 1e100 in magnitude)");
 	if (r->n == r->cap) {
-		r->cap = r->cap ? 2 * r->cap : 16;
+		r->cap = r->cap ? 2 * r->cap : 4;
 		r->v = xreallocarray(r->v, r->cap, sizeof(*r->v));
 		r->line = xreallocarray(r->line, r->cap, sizeof(*r->line));
 	}

@@ -1,7 +1,8 @@
 /*
- * valid.c: the checks that do not need the sweep: each ring alone, how the
- * rings nest, whether the polygons' interiors are connected, the hole
- * points and the universe; and the rings' orientation for output.
+ * valid.c: the checks around the sweep: each ring alone before it; after
+ * it, the roles declared against the nesting it found, whether the
+ * polygons' interiors are connected, the hole points and the universe;
+ * and the rings' orientation for output.
  */
 #include <math.h>
 #include <stdio.h>
@@ -63,10 +64,16 @@ checkring(const struct input *in, struct inring *r)
 	r->xmin = r->xmax = r->v[0].x;
 	r->ymin = r->ymax = r->v[0].y;
 	for (i = 1; i < r->n; i++) {
-		r->xmin = fmin(r->xmin, r->v[i].x);
-		r->xmax = fmax(r->xmax, r->v[i].x);
-		r->ymin = fmin(r->ymin, r->v[i].y);
-		r->ymax = fmax(r->ymax, r->v[i].y);
+		struct point v = r->v[i];
+
+		if (v.x < r->xmin)
+			r->xmin = v.x;
+		if (v.x > r->xmax)
+			r->xmax = v.x;
+		if (v.y < r->ymin)
+			r->ymin = v.y;
+		if (v.y > r->ymax)
+			r->ymax = v.y;
 	}
 }
 
@@ -176,188 +183,6 @@ connectivity(const struct input *in, const struct touch *touches,
 	free(link);
 }
 
-/*
- * Containment queries against a large ring look only at the edges in the
- * horizontal strip of the query point: a ray at height y can only cross
- * edges whose y range holds y, and those are all filed under y's strip.
- */
-struct strips {
-	double	 ymin, height;
-	size_t	 k;
-	size_t	*start;		/* edges of strip j: edge[start[j]..start[j+1]) */
-	size_t	*edge;
-};
-
-static size_t
-stripof(const struct strips *st, double y)
-{
-	double f = (y - st->ymin) / st->height;
-
-	if (!(f > 0))
-		return 0;
-	return f >= (double)(st->k - 1) ? st->k - 1 : (size_t)f;
-}
-
-static void
-buildstrips(const struct inring *r, struct strips *st)
-{
-	size_t i, j, *fill;
-	double sum = 0, lim;
-
-	/*
-	 * An edge is filed under every strip it spans: with long edges (a
-	 * zigzag) fewer strips keep that to about 5 entries per edge.
-	 */
-	for (i = 0; i < r->n; i++)
-		sum += fabs(r->v[(i + 1) % r->n].y - r->v[i].y);
-	lim = 4.0 * r->n * (r->ymax - r->ymin) / sum;
-	st->k = r->n / 8;
-	if (lim < st->k)
-		st->k = lim < 1 ? 1 : (size_t)lim;
-	st->ymin = r->ymin;
-	st->height = (r->ymax - r->ymin) / st->k;
-	st->start = xreallocarray(NULL, st->k + 1, sizeof(*st->start));
-	fill = xreallocarray(NULL, st->k + 1, sizeof(*fill));
-	memset(st->start, 0, (st->k + 1) * sizeof(*st->start));
-	for (i = 0; i < r->n; i++) {
-		struct point a = r->v[i], b = r->v[(i + 1) % r->n];
-		size_t lo = stripof(st, fmin(a.y, b.y)), hi = stripof(st,
-		    fmax(a.y, b.y));
-
-		for (j = lo; j <= hi; j++)
-			st->start[j + 1]++;
-	}
-	for (j = 0; j < st->k; j++)
-		st->start[j + 1] += st->start[j];
-	memcpy(fill, st->start, (st->k + 1) * sizeof(*fill));
-	st->edge = xreallocarray(NULL, st->start[st->k] + 1,
-	    sizeof(*st->edge));
-	for (i = 0; i < r->n; i++) {
-		struct point a = r->v[i], b = r->v[(i + 1) % r->n];
-		size_t lo = stripof(st, fmin(a.y, b.y)), hi = stripof(st,
-		    fmax(a.y, b.y));
-
-		for (j = lo; j <= hi; j++)
-			st->edge[fill[j]++] = i;
-	}
-	free(fill);
-}
-
-static int
-contains(const struct inring *r, struct strips *st, struct point p,
-    struct point toward)
-{
-	size_t j, s;
-	int inside = 0;
-
-	if (r->n < 64)
-		return ring_contains(r->v, r->n, p, toward);
-	if (st->k == 0)
-		buildstrips(r, st);
-	s = stripof(st, p.y);
-	for (j = st->start[s]; j < st->start[s + 1]; j++) {
-		size_t i = st->edge[j];
-
-		inside ^= ray_crosses(r->v[i], r->v[(i + 1) % r->n], p,
-		    toward);
-	}
-	return inside;
-}
-
-/* What cmpring's ring numbers index: qsort passes it no context. */
-static const struct inring *sortrings;
-
-static int
-cmpring(const void *a, const void *b)
-{
-	const struct inring *r = &sortrings[*(const size_t *)a];
-	const struct inring *q = &sortrings[*(const size_t *)b];
-
-	return (r->xmin > q->xmin) - (r->xmin < q->xmin);
-}
-
-static int
-bboxinside(const struct inring *a, const struct inring *b)
-{
-	return b->xmin <= a->xmin && b->xmax >= a->xmax &&
-	    b->ymin <= a->ymin && b->ymax >= a->ymax;
-}
-
-/*
- * Depth: how many rings contain it.  Parent: the deepest of those.  A sweep
- * in x keeps the rings whose x range reaches the current one, so each ring
- * is tested only against rings whose box could hold it.
- */
-static void
-nesting(struct input *in)
-{
-	struct inring *rings = in->rings;
-	struct strips *strips;
-	size_t i, j, g, n = 0, cap = 0, nact = 0, *order, *active;
-	size_t nrings = in->nrings;
-	long (*pair)[2] = NULL;
-
-	order = xreallocarray(NULL, nrings + 1, sizeof(*order));
-	active = xreallocarray(NULL, nrings + 1, sizeof(*active));
-	strips = xreallocarray(NULL, nrings + 1, sizeof(*strips));
-	memset(strips, 0, (nrings + 1) * sizeof(*strips));
-	for (i = 0; i < nrings; i++) {
-		order[i] = i;
-		rings[i].depth = 0;
-		rings[i].parent = -1;
-	}
-	sortrings = rings;
-	qsort(order, nrings, sizeof(*order), cmpring);
-	for (i = 0; i < nrings; i = g) {
-		double x = rings[order[i]].xmin;
-		size_t keep = 0;
-
-		/* rings that start together may hold one another */
-		for (g = i; g < nrings && rings[order[g]].xmin == x; g++)
-			active[nact++] = order[g];
-		for (j = 0; j < nact; j++)
-			if (rings[active[j]].xmax >= x)
-				active[keep++] = active[j];
-		nact = keep;
-		for (; i < g; i++) {
-			struct inring *a = &rings[order[i]];
-
-			for (j = 0; j < nact; j++) {
-				size_t b = active[j];
-
-				if (b == order[i] || !bboxinside(a, &rings[b]) ||
-				    !contains(&rings[b], &strips[b], a->v[0],
-				    a->v[1]))
-					continue;
-				if (n == cap) {
-					cap = cap ? 2 * cap : 64;
-					pair = xreallocarray(pair, cap,
-					    sizeof(*pair));
-				}
-				pair[n][0] = order[i];
-				pair[n++][1] = b;
-				a->depth++;
-			}
-		}
-	}
-	for (i = 0; i < n; i++) {
-		struct inring *a = &rings[pair[i][0]];
-
-		if (a->parent < 0 ||
-		    rings[pair[i][1]].depth > rings[a->parent].depth)
-			a->parent = pair[i][1];
-	}
-	for (i = 0; i < nrings; i++)
-		if (strips[i].k > 0) {
-			free(strips[i].start);
-			free(strips[i].edge);
-		}
-	free(strips);
-	free(pair);
-	free(order);
-	free(active);
-}
-
 /* Declared roles (wkt, brep) must agree with the nesting. */
 static void
 checkroles(const struct input *in)
@@ -402,13 +227,13 @@ checkseeds(const struct input *in)
 }
 
 /*
- * After the sweep, whose touches it takes: the rings' depth and parent,
- * the roles they were declared with, connected interiors, hole points.
+ * After the sweep, whose touches and nesting it takes: the roles the rings
+ * were declared with, connected interiors, hole points.
  */
 void
-checknesting(struct input *in, const struct touch *touches, size_t ntouches)
+checknesting(const struct input *in, const struct touch *touches,
+    size_t ntouches)
 {
-	nesting(in);
 	checkroles(in);
 	connectivity(in, touches, ntouches);
 	checkseeds(in);
