@@ -28,13 +28,6 @@ static unsigned long passed, failed;
 
 #include "splitmix.h"
 
-/* A uniform integer in 0..n (inclusive), n < 2^63. */
-static uint64_t
-rndupto(uint64_t n)
-{
-	return rnd() % (n + 1);
-}
-
 /* Whether %.*g at precision p reads back as v. */
 static int
 readsback(char *buf, size_t size, int p, double v)
@@ -141,15 +134,6 @@ check(double v)
 	parsecheck(got);
 	snprintf(full, sizeof(full), "%.17g", v);
 	parsecheck(full);
-}
-
-static double
-frombits(uint64_t u)
-{
-	double v;
-
-	memcpy(&v, &u, sizeof(v));
-	return v;
 }
 
 static void

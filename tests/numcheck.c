@@ -41,22 +41,6 @@
 
 static unsigned long passed, failed;
 
-/* A uniform integer in 0..n (inclusive), n < 2^63. */
-static uint64_t
-rndupto(uint64_t n)
-{
-	return rnd() % (n + 1);
-}
-
-static double
-frombits(uint64_t u)
-{
-	double v;
-
-	memcpy(&v, &u, sizeof(v));
-	return v;
-}
-
 static int
 samebits(double a, double b)
 {
