@@ -116,7 +116,7 @@ median() {
 timeit() {
 	if [ $timer = hyperfine ]; then
 		case $2 in
-		*'|'*)	set -- "$1" "sh -c '$2 > /dev/null'" ;;
+		*'|'*|*'>'*) set -- "$1" "sh -c '$2 > /dev/null'" ;;
 		esac
 		hyperfine -N --runs "$1" --style none --output null \
 		    --export-csv "$tmp/h.csv" -- "$2" >/dev/null \
@@ -259,12 +259,11 @@ deep() {
 	row star "$1" "$rlevel" subtree $((rec - nocell)) - "$mem"
 }
 
-# reader TOOL N LEVEL FILE RECORDS: time a reader of qtree(5) on FILE, the
-# output of qtsplit -l LEVEL on the star of N vertices.
+# reader STAGE COMMAND N LEVEL RECORDS: time COMMAND, a reader of the
+# output of qtsplit -l LEVEL on the star of N vertices, as row STAGE.
 reader() {
-	[ -x "./$1" ] || return 0
-	t=$(timeit "$runs" "./$1 $4")
-	row star "$2" "$3" "$1" "$5" "$t" -
+	t=$(timeit "$runs" "$2")
+	row star "$3" "$4" "$1" "$5" "$t" -
 }
 
 # catmerge LEVEL: qtcat merging two shards of the big stream, the root's
@@ -370,9 +369,15 @@ big=$(awk '$1 == "star" && $2 == 1000 && $3 <= 16 { l = $3; r = $4 }
 if [ -n "$big" ]; then
 	set -- $big
 	./qtsplit -l "$1" "$tmp/star-1000.qt" >"$tmp/big.qt"
+	# Each through sh -c, as cat | wc -l must be, so that the ratios
+	# below compare like with like.
 	for tool in qtleaves qtstats qt2svg; do
-		reader "$tool" 1000 "$1" "$tmp/big.qt" "$2"
+		[ -x "./$tool" ] || continue
+		reader "$tool" "./$tool $tmp/big.qt >/dev/null" 1000 "$1" "$2"
 	done
+	[ -x ./qtleaves ] && reader qtleaves-n \
+	    "./qtleaves -n $tmp/big.qt >/dev/null" 1000 "$1" "$2"
+	reader cat-wc "cat $tmp/big.qt | wc -l" 1000 "$1" "$2"
 	catmerge "$1"
 	rm -f "$tmp/big.qt"
 fi
@@ -565,6 +570,19 @@ END {
 			verdict(name, sprintf("%.3g M rec/s",
 			    cells[k] / sec[k] / 1e6),
 			    cells[k] / sec[k] >= 5e6 ? "PASS" : "FAIL")
+		else
+			skip(name)
+	}
+	# Issue 11: every reader at 0.8 of the line rate of cat | wc -l on
+	# the same stream, or better.
+	c = "star 1000 " l " cat-wc"
+	n = split("qtleaves qtleaves-n qtstats qt2svg", tool, " ")
+	for (i = 1; i <= n; i++) {
+		k = "star 1000 " l " " tool[i]
+		name = tool[i] " >= 0.8 x cat | wc -l, same stream"
+		if (has(k) && has(c))
+			verdict(name, sprintf("%.2f x lines/s", sec[c] / sec[k]),
+			    sec[c] / sec[k] >= 0.8 ? "PASS" : "FAIL")
 		else
 			skip(name)
 	}
