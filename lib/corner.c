@@ -25,6 +25,8 @@ struct live {
 struct corners {
 	struct live	*live;	/* open addressing, at most half full */
 	size_t		 cap, n;
+	struct live	*spare;	/* empty: the next table */
+	size_t		 sparecap;
 	uint64_t	 atx, aty;	/* the lower left of the current cell */
 	int		 keep;		/* whether pt is kept */
 	uint64_t	(*pt)[2];	/* grid point of vertex i + 1 */
@@ -73,28 +75,40 @@ put(struct corners *t, const struct live *v)
 	t->n++;
 }
 
-/* A new table without the points behind the sweep, room for as many. */
+/*
+ * A table without the points behind the sweep and room for seven times as
+ * many more, so that a rebuild, which reads every slot, comes only after
+ * three times as many points as it keeps.  The old table, emptied slot by
+ * slot as its points move, is the spare for the next rebuild.
+ */
 static void
 rebuild(struct corners *t)
 {
 	struct live *old = t->live;
-	size_t oldcap = t->cap, i, keep = 0;
+	size_t oldcap = t->cap, i, keep = 0, cap = 1024;
 
 	for (i = 0; i < oldcap; i++)
 		if (old[i].id != 0 &&
 		    !zbefore(old[i].x, old[i].y, t->atx, t->aty))
 			keep++;
-	t->cap = 1024;
-	while (4 * (keep + 1) > t->cap)
-		t->cap *= 2;
-	t->live = xreallocarray(NULL, t->cap, sizeof(*t->live));
-	memset(t->live, 0, t->cap * sizeof(*t->live));
+	while (8 * (keep + 1) > cap)
+		cap *= 2;
+	if (t->sparecap < cap || t->sparecap > 4 * cap) {
+		free(t->spare);
+		t->spare = xcalloc(cap, sizeof(*t->spare));
+		t->sparecap = cap;
+	}
+	t->live = t->spare;
+	t->cap = t->sparecap;
 	t->n = 0;
 	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0 &&
-		    !zbefore(old[i].x, old[i].y, t->atx, t->aty))
-			put(t, &old[i]);
-	free(old);
+		if (old[i].id != 0) {
+			if (!zbefore(old[i].x, old[i].y, t->atx, t->aty))
+				put(t, &old[i]);
+			old[i].id = 0;
+		}
+	t->spare = old;
+	t->sparecap = oldcap;
 }
 
 /*
@@ -118,6 +132,7 @@ corners_free(struct corners *t)
 {
 	if (t != NULL) {
 		free(t->live);
+		free(t->spare);
 		free(t->pt);
 	}
 	free(t);
