@@ -25,8 +25,7 @@ struct live {
 struct corners {
 	struct live	*live;	/* open addressing, at most half full */
 	size_t		 cap, n;
-	struct live	*spare;	/* empty: the next table */
-	size_t		 sparecap;
+	struct live	*spare;	/* empty, as large: the next table */
 	uint64_t	 atx, aty;	/* the lower left of the current cell */
 	int		 keep;		/* whether pt is kept */
 	uint64_t	(*pt)[2];	/* grid point of vertex i + 1 */
@@ -76,30 +75,18 @@ put(struct corners *t, const struct live *v)
 }
 
 /*
- * A table without the points behind the sweep and room for seven times as
- * many more, so that a rebuild, which reads every slot, comes only after
- * three times as many points as it keeps.  The old table, emptied slot by
- * slot as its points move, is the spare for the next rebuild.
+ * The points not behind the sweep moved to the spare table, the old one
+ * emptied slot by slot as they go and kept as the next spare.  Both grow
+ * to eight times the points kept, never shrink: a rebuild reads every slot
+ * and comes only after three times as many new points as it keeps.
  */
 static void
 rebuild(struct corners *t)
 {
 	struct live *old = t->live;
-	size_t oldcap = t->cap, i, keep = 0, cap = 1024;
+	size_t oldcap = t->cap, i, cap;
 
-	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0 &&
-		    !zbefore(old[i].x, old[i].y, t->atx, t->aty))
-			keep++;
-	while (8 * (keep + 1) > cap)
-		cap *= 2;
-	if (t->sparecap < cap || t->sparecap > 4 * cap) {
-		free(t->spare);
-		t->spare = xcalloc(cap, sizeof(*t->spare));
-		t->sparecap = cap;
-	}
 	t->live = t->spare;
-	t->cap = t->sparecap;
 	t->n = 0;
 	for (i = 0; i < oldcap; i++)
 		if (old[i].id != 0) {
@@ -108,7 +95,20 @@ rebuild(struct corners *t)
 			old[i].id = 0;
 		}
 	t->spare = old;
-	t->sparecap = oldcap;
+	if (8 * (t->n + 1) <= t->cap)
+		return;
+	for (cap = 2 * t->cap; 8 * (t->n + 1) > cap; cap *= 2)
+		;
+	old = t->live;
+	free(t->spare);
+	t->spare = xcalloc(cap, sizeof(*t->spare));
+	t->live = xcalloc(cap, sizeof(*t->live));
+	t->cap = cap;
+	t->n = 0;
+	for (i = 0; i < oldcap; i++)
+		if (old[i].id != 0)
+			put(t, &old[i]);
+	free(old);
 }
 
 /*
@@ -123,7 +123,9 @@ corners_new(int keeppoints)
 
 	memset(t, 0, sizeof(*t));
 	t->keep = keeppoints;
-	rebuild(t);
+	t->cap = 1024;
+	t->live = xcalloc(t->cap, sizeof(*t->live));
+	t->spare = xcalloc(t->cap, sizeof(*t->spare));
 	return t;
 }
 

@@ -427,9 +427,8 @@ pendput(uint64_t x, uint64_t y, uint32_t h)
 static uint32_t
 vertex(uint64_t x, uint64_t y)
 {
-	size_t before = corners_count(vt);
+	size_t before = npend > 0 ? corners_count(vt) : 0, k;
 	uint32_t id = corners_id(vt, x, y);
-	size_t k;
 
 	if (npend > 0 && id > before) {
 		k = pendslot(x, y);
