@@ -210,40 +210,46 @@ inittemplates(void)
 		}
 }
 
-/* The path digits of four levels, by their x bits and y bits (4 each). */
-static char pathdigits[256][4];
-
-static void
-initpathdigits(void)
+static char
+pathdigit(int level, int d, uint64_t ix, uint64_t iy)
 {
-	int xy, d, b;
+	int b = level - 1 - d;
 
-	for (xy = 0; xy < 256; xy++)
-		for (d = 0; d < 4; d++) {
-			b = 3 - d;
-			pathdigits[xy][d] = '0' + 2 * (xy >> (4 + b) & 1) +
-			    (xy >> b & 1);
-		}
+	return '0' + (int)(2 * (iy >> b & 1) + (ix >> b & 1));
 }
 
 static char *
 cellpath(char *path, int level, uint64_t ix, uint64_t iy)
 {
-	int d, b;
+	int d;
 
 	if (level == 0)
 		return strcpy(path, ".");
-	/* the top level % 4 digits alone, then four a step */
-	for (d = 0; d < level % 4; d++) {
-		b = level - 1 - d;
-		path[d] = '0' + (int)(2 * (iy >> b & 1) + (ix >> b & 1));
-	}
-	for (; d < level; d += 4) {
-		b = level - 4 - d;
-		memcpy(path + d, pathdigits[(iy >> b & 15) << 4 |
-		    (ix >> b & 15)], 4);
-	}
+	for (d = 0; d < level; d++)
+		path[d] = pathdigit(level, d, ix, iy);
 	path[level] = '\0';
+	return path;
+}
+
+/*
+ * The path of leaf l written over that of leaf p, the one before it: in
+ * preorder the two mostly part only in their last digits, from the
+ * highest bit where their columns or rows differ at the coarser level.
+ */
+static char *
+nextpath(char *path, const struct leaf *p, const struct leaf *l)
+{
+	int m = l->level < p->level ? l->level : p->level, d = m;
+	uint64_t diff = (l->ix >> (l->level - m) ^ p->ix >> (p->level - m)) |
+	    (l->iy >> (l->level - m) ^ p->iy >> (p->level - m));
+
+	if (l->level == 0 || p->level == 0)
+		return cellpath(path, l->level, l->ix, l->iy);
+	for (; diff != 0; diff >>= 1)
+		d--;
+	for (; d < l->level; d++)
+		path[d] = pathdigit(l->level, d, l->ix, l->iy);
+	path[l->level] = '\0';
 	return path;
 }
 
@@ -324,21 +330,33 @@ unbalanced(const struct leaf *l, int k)
 }
 
 /*
- * Is cell (level, x, y), across a side of leaf i, a sibling that is kept?
- * When all four siblings are kept leaves they are consecutive in preorder,
- * so one comparison answers without the set; otherwise the set does.
+ * Is the cell across side k of leaf i a sibling that is kept?  Siblings
+ * lie across a leaf's west side when it is a right child, its east side
+ * when a left one, and so on; when all four are kept leaves they are
+ * consecutive in preorder, so one comparison answers without the set.
+ * When this says no, the set does.
  */
 static int
-keptsibling(size_t i, int level, uint64_t x, uint64_t y)
+keptsibling(size_t i, int k, uint64_t x, uint64_t y)
 {
-	const struct leaf *l = &leaves[i];
+	const struct leaf *l = &leaves[i], *s;
+	int right = l->ix & 1, upper = l->iy & 1;
 	size_t j;
 
-	if (x >> 1 != l->ix >> 1 || y >> 1 != l->iy >> 1)
+	if (k == W && right && i >= 1)
+		j = i - 1;
+	else if (k == E && !right)
+		j = i + 1;
+	else if (k == S && upper && i >= 2)
+		j = i - 2;
+	else if (k == N && !upper)
+		j = i + 2;
+	else
 		return 0;
-	j = i + (2 * (y & 1) + (x & 1)) - (2 * (l->iy & 1) + (l->ix & 1));
-	return j < nleaves && leaves[j].level == level && leaves[j].ix == x &&
-	    leaves[j].iy == y;
+	if (j >= nleaves)
+		return 0;
+	s = &leaves[j];
+	return s->level == l->level && s->ix == x && s->iy == y;
 }
 
 /* What lies across each side of a leaf: hanging midpoints and boundary. */
@@ -359,7 +377,7 @@ sides(size_t i)
 		}
 		nx = l->ix + dirx[k];
 		ny = l->iy + diry[k];
-		if (keptsibling(i, level, nx, ny))
+		if (keptsibling(i, k, nx, ny))
 			continue;
 		c = cellset_get(set, level, nx, ny);
 		if (c > 0)
@@ -801,7 +819,8 @@ writeqtree(size_t nv, const uint32_t *inv)
 		c.ix = l->ix;
 		c.iy = l->iy;
 		c.class = l->class;
-		c.path = cellpath(path, l->level, l->ix, l->iy);
+		c.path = i == 0 ? cellpath(path, l->level, l->ix, l->iy) :
+		    nextpath(path, &leaves[i - 1], l);
 		c.size = u.size;
 		qt_cell(&c, first);
 		first += l->nel;
@@ -1031,7 +1050,6 @@ main(int argc, char *argv[])
 	if (format == TRIANGLE)
 		alltri = 1;
 	inittemplates();
-	initpathdigits();
 
 	fp = openin(argc == 1 ? argv[0] : "-", &inname);
 	r = qt_open(fp, inname, QT_NEEDUNIVERSE | (verbose ? QT_VERBOSE : 0));
