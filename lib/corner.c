@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "qtree.h"
+#include "internal.h"
 
 struct live {
 	uint64_t	x, y;
@@ -25,6 +26,7 @@ struct live {
 struct corners {
 	struct live	*live;	/* open addressing, at most half full */
 	size_t		 cap, n;
+	int		 shift;		/* 64 - log2 cap, for slotof */
 	struct live	*spare;	/* empty, as large: the next table */
 	uint64_t	 atx, aty;	/* the lower left of the current cell */
 	int		 keep;		/* whether pt is kept */
@@ -49,17 +51,13 @@ zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
 
 /*
  * Grid points of coarse cells end in many zero bits, which a product
- * keeps: the high bits are folded down before the slot is taken.
+ * keeps: the slot is taken from the high bits of the products.
  */
 static size_t
 slotof(const struct corners *t, uint64_t x, uint64_t y)
 {
-	uint64_t h = x ^ y * UINT64_C(0x9E3779B97F4A7C15);
-
-	h ^= h >> 33;
-	h *= UINT64_C(0xFF51AFD7ED558CCD);
-	h ^= h >> 33;
-	return h & (t->cap - 1);
+	return (x * UINT64_C(0x9E3779B97F4A7C15) ^
+	    y * UINT64_C(0xC2B2AE3D27D4EB4F)) >> t->shift;
 }
 
 static void
@@ -104,6 +102,8 @@ rebuild(struct corners *t)
 	t->spare = xcalloc(cap, sizeof(*t->spare));
 	t->live = xcalloc(cap, sizeof(*t->live));
 	t->cap = cap;
+	for (t->shift = 64; cap > 1; cap /= 2)
+		t->shift--;
 	t->n = 0;
 	for (i = 0; i < oldcap; i++)
 		if (old[i].id != 0)
@@ -124,6 +124,7 @@ corners_new(int keeppoints)
 	memset(t, 0, sizeof(*t));
 	t->keep = keeppoints;
 	t->cap = 1024;
+	t->shift = 64 - 10;
 	t->live = xcalloc(t->cap, sizeof(*t->live));
 	t->spare = xcalloc(t->cap, sizeof(*t->spare));
 	return t;
@@ -148,19 +149,16 @@ corners_at(struct corners *t, uint64_t x, uint64_t y)
 	t->aty = y;
 }
 
-/* The number of the vertex at grid point (x, y); a new one is numbered. */
-uint32_t
-corners_id(struct corners *t, uint64_t x, uint64_t y)
+/* A new vertex at (x, y), which slot k is free for unless the table is full. */
+static OUTOFLINE uint32_t
+newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y)
 {
-	struct live v;
-	size_t k;
-
-	if (2 * (t->n + 1) > t->cap)
+	if (2 * (t->n + 1) > t->cap) {
 		rebuild(t);
-	for (k = slotof(t, x, y); t->live[k].id != 0;
-	    k = (k + 1) & (t->cap - 1))
-		if (t->live[k].x == x && t->live[k].y == y)
-			return t->live[k].id;
+		for (k = slotof(t, x, y); t->live[k].id != 0;
+		    k = (k + 1) & (t->cap - 1))
+			;
+	}
 	if (t->npt == UINT32_MAX)
 		die(1, "more than %lu vertices", (unsigned long)UINT32_MAX);
 	if (t->keep) {
@@ -171,11 +169,28 @@ corners_id(struct corners *t, uint64_t x, uint64_t y)
 		t->pt[t->npt][0] = x;
 		t->pt[t->npt][1] = y;
 	}
-	v.x = x;
-	v.y = y;
-	v.id = ++t->npt;
-	put(t, &v);
-	return v.id;
+	t->live[k].x = x;
+	t->live[k].y = y;
+	t->live[k].id = ++t->npt;
+	t->n++;
+	return t->live[k].id;
+}
+
+/*
+ * The number of the vertex at grid point (x, y); a new one is numbered.
+ * The table drops the points behind the sweep when it fills, which no
+ * cell asks for again.
+ */
+uint32_t
+corners_id(struct corners *t, uint64_t x, uint64_t y)
+{
+	size_t k;
+
+	for (k = slotof(t, x, y); t->live[k].id != 0;
+	    k = (k + 1) & (t->cap - 1))
+		if (t->live[k].x == x && t->live[k].y == y)
+			return t->live[k].id;
+	return newpoint(t, k, x, y);
 }
 
 /* The number of the vertex at (x, y) if it has one and is live, else 0. */

@@ -2,6 +2,17 @@
  * internal.h: what the library's files share and no program calls.
  */
 
+/*
+ * A rarely taken path kept out of line, so that the common one it leaves
+ * needs no registers saved (GCC and Clang inline a static function called
+ * once otherwise).
+ */
+#if defined(__GNUC__)
+#define OUTOFLINE	__attribute__((noinline, cold))
+#else
+#define OUTOFLINE
+#endif
+
 /* fmt.c, parse.c: the 128-bit product of two 64-bit numbers. */
 static inline void
 mul64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)

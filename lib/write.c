@@ -102,9 +102,9 @@ recorded(const char *end)
 	w.written++;
 }
 
-/* Number v from n, the number of its kind written before: room for 24. */
-static char *
-putnum(char *p, struct numtext *n, unsigned long long v)
+/* Number v into n, from n's number when v is a little more. */
+static void
+numtext(struct numtext *n, unsigned long long v)
 {
 	unsigned long long add = v - n->v;
 	char *d;
@@ -112,8 +112,6 @@ putnum(char *p, struct numtext *n, unsigned long long v)
 
 	if (n->len == 0 || v < n->v || add > 9 || v > LLONG_MAX)
 		n->len = fmtint(n->text, (long long)v) - n->text;
-	else if (n->text[n->len - 1] + (int)add <= '9')
-		n->text[n->len - 1] += (char)add;
 	else {	/* add to the last digit, carry to the left */
 		for (d = n->text + n->len; add > 0 && d > n->text;
 		    add = c > 9) {
@@ -126,6 +124,21 @@ putnum(char *p, struct numtext *n, unsigned long long v)
 		}
 	}
 	n->v = v;
+}
+
+/*
+ * Number v from n, the number of its kind written before: room for 24.
+ * Most often only the last digit changes.
+ */
+static inline char *
+putnum(char *p, struct numtext *n, unsigned long long v)
+{
+	if (n->len > 0 && v > n->v && v - n->v <= 9 && v <= LLONG_MAX &&
+	    n->text[n->len - 1] + (int)(v - n->v) <= '9') {
+		n->text[n->len - 1] += (char)(v - n->v);
+		n->v = v;
+	} else
+		numtext(n, v);
 	memcpy(p, n->text, sizeof(n->text));	/* the excess is overwritten */
 	return p + n->len;
 }
@@ -134,7 +147,7 @@ putnum(char *p, struct numtext *n, unsigned long long v)
  * Vertex number v, its text kept: room for 24.  Numbered by first use,
  * a vertex is new mostly as the one after the newest before.
  */
-static char *
+static inline char *
 putvertex(char *p, unsigned long long v)
 {
 	struct vtext *t = &w.vtext[v % NVTEXT];
@@ -271,19 +284,24 @@ qt_cell(const struct cell *c, unsigned long long id)
 	recorded(p);
 }
 
+static void
+gridtext(struct gridtext *t, int axis, int level, uint64_t i, uint64_t key)
+{
+	t->key = key;
+	t->len = fmtreal(t->text, cellcoord(axis ? w.cell.u.y0 : w.cell.u.x0,
+	    w.cell.u.size, level, i)) - t->text;
+}
+
 /* Writes the coordinate of grid line i at level on axis 0 (x) or 1 (y). */
-static char *
+static inline char *
 putgrid(char *p, int axis, int level, uint64_t i)
 {
 	uint64_t key = i << 6 | (uint64_t)level;
 	struct gridtext *t;
 
 	t = &w.grid[axis][(key * UINT64_C(0x9E3779B97F4A7C15)) >> 52];
-	if (t->key != key) {
-		t->key = key;
-		t->len = fmtreal(t->text, cellcoord(axis ? w.cell.u.y0 :
-		    w.cell.u.x0, w.cell.u.size, level, i)) - t->text;
-	}
+	if (t->key != key)
+		gridtext(t, axis, level, i, key);
 	memcpy(p, t->text, sizeof(t->text));
 	return p + t->len;
 }
