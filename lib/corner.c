@@ -8,7 +8,7 @@
  * them before its lower left corner in Z order (Z order is monotone in
  * each coordinate).  So once the cell being meshed starts after a point in
  * Z order, that point is never asked for again: the table of live points
- * drops it when it next grows, and stays as small as the front of the
+ * drops it when it next fills, and stays as small as the front of the
  * sweep.  What may be kept for good is each vertex's grid point, 16 bytes.
  */
 #include <stdint.h>
