@@ -275,8 +275,10 @@ celltext_init(struct celltext *t, const struct universe *u)
 	size_t i;
 
 	t->u = *u;
-	for (i = 0; i <= QT_MAXLEVEL; i++)
+	for (i = 0; i <= QT_MAXLEVEL; i++) {
 		t->size[i] = ldexp(u->size, -(int)i);
+		t->sizetext[i].i = UINT64_MAX;
+	}
 	for (i = 0; i < sizeof(t->coord) / sizeof(*k); i++)
 		k[i].i = UINT64_MAX;
 }
@@ -284,7 +286,8 @@ celltext_init(struct celltext *t, const struct universe *u)
 const struct coordtext *
 celltext_miss(struct celltext *t, int level, int axis, uint64_t i)
 {
-	struct coordtext *k = &t->coord[level][axis][i % NCOORD];
+	struct coordtext *k = axis == 2 ? &t->sizetext[level] :
+	    &t->coord[level][axis][i % NCOORD];
 	const struct coordtext *up, *prev;
 
 	k->i = i;

@@ -2,7 +2,9 @@
  * A set of cells in memory, found by level, column and row: the piece that
  * qtbalance and qtmesh share for neighbour search.  A cell is two words:
  * its column with its level and class above it, and its row.  Open
- * addressing, linear probing, at most half full: 32 bytes a cell.
+ * addressing, linear probing, at most half full: 32 bytes a cell.  The
+ * level is kept plus one, so that no cell's first word is 0 and a table
+ * of zeros from calloc is empty without being filled.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -12,10 +14,10 @@
 
 #define COLBITS	50	/* QT_MAXLEVEL: a column fits below bit 50 */
 #define COLMASK	((UINT64_C(1) << COLBITS) - 1)
-#define EMPTY	UINT64_MAX	/* no cell has every bit of its first word set */
+#define EMPTY	0	/* no cell's first word: its level is kept plus one */
 
 struct slot {
-	uint64_t	key;	/* class << 56 | level << 50 | column */
+	uint64_t	key;	/* class << 56 | (level + 1) << 50 | column */
 	uint64_t	row;
 };
 
@@ -27,7 +29,7 @@ struct cellset {
 static uint64_t
 keyof(int level, uint64_t ix)
 {
-	return (uint64_t)level << COLBITS | ix;
+	return (uint64_t)(level + 1) << COLBITS | ix;
 }
 
 static size_t
@@ -54,18 +56,18 @@ find(const struct cellset *s, int level, uint64_t ix, uint64_t iy)
 	return &s->slot[k];
 }
 
+/* A table of cap slots, a power of two, the cells moved over. */
 static void
-grow(struct cellset *s)
+resize(struct cellset *s, size_t cap)
 {
 	struct slot *old = s->slot;
 	size_t i, oldcap = s->cap;
 
-	s->cap = oldcap ? 2 * oldcap : 1024;
-	s->slot = xreallocarray(NULL, s->cap, sizeof(*s->slot));
-	memset(s->slot, 0xff, s->cap * sizeof(*s->slot));
+	s->cap = cap;
+	s->slot = xcalloc(s->cap, sizeof(*s->slot));
 	for (i = 0; i < oldcap; i++)
 		if (old[i].key != EMPTY) {
-			int level = old[i].key >> COLBITS & 0x3f;
+			int level = (old[i].key >> COLBITS & 0x3f) - 1;
 
 			*find(s, level, old[i].key & COLMASK, old[i].row) =
 			    old[i];
@@ -80,7 +82,7 @@ cellset_new(void)
 
 	s->slot = NULL;
 	s->cap = s->n = 0;
-	grow(s);
+	resize(s, 1024);
 	return s;
 }
 
@@ -109,7 +111,7 @@ cellset_put(struct cellset *s, int level, uint64_t ix, uint64_t iy,
 	struct slot *p;
 
 	if (2 * (s->n + 1) > s->cap)
-		grow(s);
+		resize(s, 2 * s->cap);
 	p = find(s, level, ix, iy);
 	if (p->key == EMPTY) {
 		p->row = iy;
@@ -162,6 +164,10 @@ cellnext(int level, uint64_t ix, uint64_t iy, int dx, int dy, uint64_t *nx,
 void
 cellset_reserve(struct cellset *s, size_t n)
 {
-	while (2 * n > s->cap)
-		grow(s);
+	size_t cap = s->cap;
+
+	while (2 * n > cap)
+		cap *= 2;
+	if (cap > s->cap)
+		resize(s, cap);
 }

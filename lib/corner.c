@@ -8,7 +8,7 @@
  * them before its lower left corner in Z order (Z order is monotone in
  * each coordinate).  So once the cell being meshed starts after a point in
  * Z order, that point is never asked for again: the table of live points
- * drops it when it next grows, and stays as small as the front of the
+ * drops it when it next fills, and stays as small as the front of the
  * sweep.  What may be kept for good is each vertex's grid point, 16 bytes.
  */
 #include <stdint.h>
@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "qtree.h"
+#include "internal.h"
 
 struct live {
 	uint64_t	x, y;
@@ -25,6 +26,8 @@ struct live {
 struct corners {
 	struct live	*live;	/* open addressing, at most half full */
 	size_t		 cap, n;
+	int		 shift;		/* 64 - log2 cap, for slotof */
+	struct live	*spare;	/* empty, as large: the next table */
 	uint64_t	 atx, aty;	/* the lower left of the current cell */
 	int		 keep;		/* whether pt is kept */
 	uint64_t	(*pt)[2];	/* grid point of vertex i + 1 */
@@ -48,17 +51,13 @@ zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
 
 /*
  * Grid points of coarse cells end in many zero bits, which a product
- * keeps: the high bits are folded down before the slot is taken.
+ * keeps: the slot is taken from the high bits of the products.
  */
 static size_t
 slotof(const struct corners *t, uint64_t x, uint64_t y)
 {
-	uint64_t h = x ^ y * UINT64_C(0x9E3779B97F4A7C15);
-
-	h ^= h >> 33;
-	h *= UINT64_C(0xFF51AFD7ED558CCD);
-	h ^= h >> 33;
-	return h & (t->cap - 1);
+	return (x * UINT64_C(0x9E3779B97F4A7C15) ^
+	    y * UINT64_C(0xC2B2AE3D27D4EB4F)) >> t->shift;
 }
 
 static void
@@ -73,26 +72,41 @@ put(struct corners *t, const struct live *v)
 	t->n++;
 }
 
-/* A new table without the points behind the sweep, room for as many. */
+/*
+ * The points not behind the sweep moved to the spare table, the old one
+ * emptied slot by slot as they go and kept as the next spare.  Both grow
+ * to eight times the points kept, never shrink: a rebuild reads every slot
+ * and comes only after three times as many new points as it keeps.
+ */
 static void
 rebuild(struct corners *t)
 {
 	struct live *old = t->live;
-	size_t oldcap = t->cap, i, keep = 0;
+	size_t oldcap = t->cap, i, cap;
 
-	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0 &&
-		    !zbefore(old[i].x, old[i].y, t->atx, t->aty))
-			keep++;
-	t->cap = 1024;
-	while (4 * (keep + 1) > t->cap)
-		t->cap *= 2;
-	t->live = xreallocarray(NULL, t->cap, sizeof(*t->live));
-	memset(t->live, 0, t->cap * sizeof(*t->live));
+	t->live = t->spare;
 	t->n = 0;
 	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0 &&
-		    !zbefore(old[i].x, old[i].y, t->atx, t->aty))
+		if (old[i].id != 0) {
+			if (!zbefore(old[i].x, old[i].y, t->atx, t->aty))
+				put(t, &old[i]);
+			old[i].id = 0;
+		}
+	t->spare = old;
+	if (8 * (t->n + 1) <= t->cap)
+		return;
+	for (cap = 2 * t->cap; 8 * (t->n + 1) > cap; cap *= 2)
+		;
+	old = t->live;
+	free(t->spare);
+	t->spare = xcalloc(cap, sizeof(*t->spare));
+	t->live = xcalloc(cap, sizeof(*t->live));
+	t->cap = cap;
+	for (t->shift = 64; cap > 1; cap /= 2)
+		t->shift--;
+	t->n = 0;
+	for (i = 0; i < oldcap; i++)
+		if (old[i].id != 0)
 			put(t, &old[i]);
 	free(old);
 }
@@ -109,7 +123,10 @@ corners_new(int keeppoints)
 
 	memset(t, 0, sizeof(*t));
 	t->keep = keeppoints;
-	rebuild(t);
+	t->cap = 1024;
+	t->shift = 64 - 10;
+	t->live = xcalloc(t->cap, sizeof(*t->live));
+	t->spare = xcalloc(t->cap, sizeof(*t->spare));
 	return t;
 }
 
@@ -118,6 +135,7 @@ corners_free(struct corners *t)
 {
 	if (t != NULL) {
 		free(t->live);
+		free(t->spare);
 		free(t->pt);
 	}
 	free(t);
@@ -131,19 +149,16 @@ corners_at(struct corners *t, uint64_t x, uint64_t y)
 	t->aty = y;
 }
 
-/* The number of the vertex at grid point (x, y); a new one is numbered. */
-uint32_t
-corners_id(struct corners *t, uint64_t x, uint64_t y)
+/* A new vertex at (x, y), which slot k is free for unless the table is full. */
+static OUTOFLINE uint32_t
+newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y)
 {
-	struct live v;
-	size_t k;
-
-	if (2 * (t->n + 1) > t->cap)
+	if (2 * (t->n + 1) > t->cap) {
 		rebuild(t);
-	for (k = slotof(t, x, y); t->live[k].id != 0;
-	    k = (k + 1) & (t->cap - 1))
-		if (t->live[k].x == x && t->live[k].y == y)
-			return t->live[k].id;
+		for (k = slotof(t, x, y); t->live[k].id != 0;
+		    k = (k + 1) & (t->cap - 1))
+			;
+	}
 	if (t->npt == UINT32_MAX)
 		die(1, "more than %lu vertices", (unsigned long)UINT32_MAX);
 	if (t->keep) {
@@ -154,11 +169,28 @@ corners_id(struct corners *t, uint64_t x, uint64_t y)
 		t->pt[t->npt][0] = x;
 		t->pt[t->npt][1] = y;
 	}
-	v.x = x;
-	v.y = y;
-	v.id = ++t->npt;
-	put(t, &v);
-	return v.id;
+	t->live[k].x = x;
+	t->live[k].y = y;
+	t->live[k].id = ++t->npt;
+	t->n++;
+	return t->live[k].id;
+}
+
+/*
+ * The number of the vertex at grid point (x, y); a new one is numbered.
+ * The table drops the points behind the sweep when it fills, which no
+ * cell asks for again.
+ */
+uint32_t
+corners_id(struct corners *t, uint64_t x, uint64_t y)
+{
+	size_t k;
+
+	for (k = slotof(t, x, y); t->live[k].id != 0;
+	    k = (k + 1) & (t->cap - 1))
+		if (t->live[k].x == x && t->live[k].y == y)
+			return t->live[k].id;
+	return newpoint(t, k, x, y);
 }
 
 /* The number of the vertex at (x, y) if it has one and is live, else 0. */

@@ -2,6 +2,17 @@
  * internal.h: what the library's files share and no program calls.
  */
 
+/*
+ * A rarely taken path kept out of line, so that the common one it leaves
+ * needs no registers saved (GCC and Clang inline a static function called
+ * once otherwise).
+ */
+#if defined(__GNUC__)
+#define OUTOFLINE	__attribute__((noinline, cold))
+#else
+#define OUTOFLINE
+#endif
+
 /* fmt.c, parse.c: the 128-bit product of two 64-bit numbers. */
 static inline void
 mul64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
@@ -32,9 +43,12 @@ void	 two_product(double, double, double *, double *);
  * print them, kept per level and axis for the last few columns: in
  * preorder, neighbours share columns and rows, and children their
  * parent's, so few are ever formatted twice.  The reader compares fields
- * with them, the writer copies them.
+ * with them, the writer copies them.  Sixteen columns a level and axis:
+ * in Z order a level's cells come back to a column after blocks of
+ * columns to its right, and with eight the cells of a level-16 tree along
+ * a curve formatted twice as many coordinates; a level has one size.
  */
-#define NCOORD	8	/* columns kept per level and axis */
+#define NCOORD	16	/* columns kept per level and axis */
 
 struct coordtext {
 	uint64_t	 i;		/* UINT64_MAX when empty */
@@ -47,7 +61,8 @@ struct coordtext {
 struct celltext {
 	struct universe	 u;
 	double		 size[QT_MAXLEVEL + 1];
-	struct coordtext coord[QT_MAXLEVEL + 1][3][NCOORD];
+	struct coordtext sizetext[QT_MAXLEVEL + 1];
+	struct coordtext coord[QT_MAXLEVEL + 1][2][NCOORD];
 };
 
 void	 celltext_init(struct celltext *, const struct universe *);
@@ -58,7 +73,8 @@ const struct coordtext *celltext_miss(struct celltext *, int, int,
 static inline const struct coordtext *
 celltext(struct celltext *t, int level, int axis, uint64_t i)
 {
-	const struct coordtext *k = &t->coord[level][axis][i % NCOORD];
+	const struct coordtext *k = axis == 2 ? &t->sizetext[level] :
+	    &t->coord[level][axis][i % NCOORD];
 
 	return k->i == i ? k : celltext_miss(t, level, axis, i);
 }

@@ -96,6 +96,17 @@ xreallocarray(void *p, size_t n, size_t size)
 	return p;
 }
 
+/* Zeroed memory; large blocks come as fresh pages, never written. */
+void *
+xcalloc(size_t n, size_t size)
+{
+	void *p = calloc(n ? n : 1, size ? size : 1);
+
+	if (p == NULL)
+		die(1, "out of memory");
+	return p;
+}
+
 char *
 xstrdup(const char *s)
 {

@@ -3,6 +3,7 @@
  * standard output in large writes, each counted for the end record.
  */
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,6 +26,28 @@ struct gridtext {
 	char		text[32];
 };
 
+/*
+ * Element, vertex and cell numbers mostly go up by one from the number
+ * before of their kind: the text of that one, digits added, is the next.
+ */
+struct numtext {
+	unsigned long long v;
+	size_t		len;	/* 0: none yet */
+	char		text[24];
+};
+
+/*
+ * An element's vertices are mostly those of elements just before: their
+ * numbers' texts are kept by the number's low bits.
+ */
+#define NVTEXT	8192
+
+struct vtext {
+	uint32_t	v;	/* 0 when empty */
+	uint32_t	len;
+	char		text[24];	/* putnum's room */
+};
+
 static struct {
 	char		 buf[1 << 16];
 	size_t		 len;
@@ -32,6 +55,8 @@ static struct {
 	unsigned long long flushed;	/* bytes, for progress reports */
 	struct celltext	 cell;
 	struct gridtext	 grid[2][NTEXT];
+	struct numtext	 cellid, vertexid, elemid, newvertex;
+	struct vtext	 vtext[NVTEXT];
 } w;
 
 static void
@@ -75,6 +100,66 @@ recorded(const char *end)
 {
 	w.len = end - w.buf;
 	w.written++;
+}
+
+/* Number v into n, from n's number when v is a little more. */
+static void
+numtext(struct numtext *n, unsigned long long v)
+{
+	unsigned long long add = v - n->v;
+	char *d;
+	int c;
+
+	if (n->len == 0 || v < n->v || add > 9 || v > LLONG_MAX)
+		n->len = fmtint(n->text, (long long)v) - n->text;
+	else {	/* add to the last digit, carry to the left */
+		for (d = n->text + n->len; add > 0 && d > n->text;
+		    add = c > 9) {
+			c = *--d - '0' + (int)add;
+			*d = '0' + (c > 9 ? c - 10 : c);
+		}
+		if (add > 0) {	/* 99 + 1: one digit more */
+			memmove(n->text + 1, n->text, n->len++);
+			n->text[0] = '1';
+		}
+	}
+	n->v = v;
+}
+
+/*
+ * Number v from n, the number of its kind written before: room for 24.
+ * Most often only the last digit changes.
+ */
+static inline char *
+putnum(char *p, struct numtext *n, unsigned long long v)
+{
+	if (n->len > 0 && v > n->v && v - n->v <= 9 && v <= LLONG_MAX &&
+	    n->text[n->len - 1] + (int)(v - n->v) <= '9') {
+		n->text[n->len - 1] += (char)(v - n->v);
+		n->v = v;
+	} else
+		numtext(n, v);
+	memcpy(p, n->text, sizeof(n->text));	/* the excess is overwritten */
+	return p + n->len;
+}
+
+/*
+ * Vertex number v, its text kept: room for 24.  Numbered by first use,
+ * a vertex is new mostly as the one after the newest before.
+ */
+static inline char *
+putvertex(char *p, unsigned long long v)
+{
+	struct vtext *t = &w.vtext[v % NVTEXT];
+
+	if (t->v != v) {
+		if (v > UINT32_MAX || v == 0)
+			return fmtint(p, (long long)v);
+		t->v = (uint32_t)v;
+		t->len = putnum(t->text, &w.newvertex, v) - t->text;
+	}
+	memcpy(p, t->text, sizeof(t->text));
+	return p + t->len;
 }
 
 void
@@ -193,25 +278,30 @@ qt_cell(const struct cell *c, unsigned long long id)
 	}
 	if (id > 0) {
 		*p++ = ' ';
-		p = fmtint(p, (long long)id);
+		p = putnum(p, &w.cellid, id);
 	}
 	*p++ = '\n';
 	recorded(p);
 }
 
+static void
+gridtext(struct gridtext *t, int axis, int level, uint64_t i, uint64_t key)
+{
+	t->key = key;
+	t->len = fmtreal(t->text, cellcoord(axis ? w.cell.u.y0 : w.cell.u.x0,
+	    w.cell.u.size, level, i)) - t->text;
+}
+
 /* Writes the coordinate of grid line i at level on axis 0 (x) or 1 (y). */
-static char *
+static inline char *
 putgrid(char *p, int axis, int level, uint64_t i)
 {
 	uint64_t key = i << 6 | (uint64_t)level;
 	struct gridtext *t;
 
 	t = &w.grid[axis][(key * UINT64_C(0x9E3779B97F4A7C15)) >> 52];
-	if (t->key != key) {
-		t->key = key;
-		t->len = fmtreal(t->text, cellcoord(axis ? w.cell.u.y0 :
-		    w.cell.u.x0, w.cell.u.size, level, i)) - t->text;
-	}
+	if (t->key != key)
+		gridtext(t, axis, level, i, key);
 	memcpy(p, t->text, sizeof(t->text));
 	return p + t->len;
 }
@@ -223,7 +313,7 @@ qt_gridvertex(unsigned long long id, int level, uint64_t ix, uint64_t iy)
 	char *p = room(128);
 
 	memcpy(p, "vertex ", 7);
-	p = fmtint(p + 7, (long long)id);
+	p = putnum(p + 7, &w.vertexid, id);
 	*p++ = ' ';
 	p = putgrid(p, 0, level, ix);
 	*p++ = ' ';
@@ -237,16 +327,16 @@ qt_elem(unsigned long long id, const char *type, size_t n,
     const unsigned long long *v)
 {
 	size_t i, len = strlen(type);
-	char *p = room(48 + len + 24 * n);
+	char *p = room(64 + len + 25 * n);
 
 	memcpy(p, "elem ", 5);
-	p = fmtint(p + 5, (long long)id);
+	p = putnum(p + 5, &w.elemid, id);
 	*p++ = ' ';
 	memcpy(p, type, len);
 	p += len;
 	for (i = 0; i < n; i++) {
 		*p++ = ' ';
-		p = fmtint(p, (long long)v[i]);
+		p = putvertex(p, v[i]);
 	}
 	*p++ = '\n';
 	recorded(p);

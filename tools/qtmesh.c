@@ -63,9 +63,15 @@ static const struct tmpl {
 	    { 3, { 5, 6, 7 } }, { 4, { 1, 3, 5, 7 } } } },
 };
 
+/*
+ * The elements each hanging mask gives, the template turned and each
+ * element's points starting from its lowest, then leftmost point (one
+ * spelling per element), quads cut in two along the diagonal from there
+ * with -T: worked out once, not for every leaf.
+ */
 static struct {
-	const struct tmpl	*t;
-	int			 turn;
+	int		nel;
+	struct shape	el[10];
 } bymask[16];
 
 /* A kept leaf: 32 bytes. */
@@ -139,17 +145,77 @@ turnmask(int m, int r)
 	return (m << r | m >> (4 - r)) & 15;
 }
 
+/* Point p of a leaf in half sides from its lower left corner. */
+static int
+halfx(int p)
+{
+	static const int hx[8] = { 0, 1, 2, 2, 2, 1, 0, 0 };
+
+	return hx[p];
+}
+
+static int
+halfy(int p)
+{
+	static const int hy[8] = { 0, 0, 0, 1, 2, 2, 2, 1 };
+
+	return hy[p];
+}
+
+/* Element p[0..n) into mask m's list, as addelem once spelled it. */
+static void
+addshape(int m, int n, const int *p)
+{
+	struct shape *e;
+	int i, lo = 0;
+
+	for (i = 1; i < n; i++)
+		if (halfy(p[i]) < halfy(p[lo]) || (halfy(p[i]) ==
+		    halfy(p[lo]) && halfx(p[i]) < halfx(p[lo])))
+			lo = i;
+	if (n == 4 && alltri) {	/* along the diagonal from the lowest */
+		int t1[3], t2[3];
+
+		for (i = 0; i < 3; i++) {
+			t1[i] = p[(lo + i) % 4];
+			t2[i] = p[(lo + (i ? i + 1 : 0)) % 4];
+		}
+		addshape(m, 3, t1);
+		addshape(m, 3, t2);
+		return;
+	}
+	e = &bymask[m].el[bymask[m].nel++];
+	e->n = n;
+	for (i = 0; i < n; i++)
+		e->p[i] = p[(lo + i) % n];
+}
+
+/* Needs alltri set: -T and -f triangle cut every quad. */
 static void
 inittemplates(void)
 {
 	size_t i;
-	int r;
+	int r, m, e, k, q[4];
 
 	for (i = 0; i < sizeof(tmpls) / sizeof(tmpls[0]); i++)
 		for (r = 3; r >= 0; r--) {
-			bymask[turnmask(tmpls[i].mask, r)].t = &tmpls[i];
-			bymask[turnmask(tmpls[i].mask, r)].turn = r;
+			m = turnmask(tmpls[i].mask, r);
+			bymask[m].nel = 0;
+			for (e = 0; e < tmpls[i].nel; e++) {
+				for (k = 0; k < tmpls[i].el[e].n; k++)
+					q[k] = (tmpls[i].el[e].p[k] + 2 * r) %
+					    8;
+				addshape(m, tmpls[i].el[e].n, q);
+			}
 		}
+}
+
+static char
+pathdigit(int level, int d, uint64_t ix, uint64_t iy)
+{
+	int b = level - 1 - d;
+
+	return '0' + (int)(2 * (iy >> b & 1) + (ix >> b & 1));
 }
 
 static char *
@@ -159,12 +225,31 @@ cellpath(char *path, int level, uint64_t ix, uint64_t iy)
 
 	if (level == 0)
 		return strcpy(path, ".");
-	for (d = 0; d < level; d++) {
-		int b = level - 1 - d;
-
-		path[d] = '0' + (int)(2 * (iy >> b & 1) + (ix >> b & 1));
-	}
+	for (d = 0; d < level; d++)
+		path[d] = pathdigit(level, d, ix, iy);
 	path[level] = '\0';
+	return path;
+}
+
+/*
+ * The path of leaf l written over that of leaf p, the one before it: in
+ * preorder the two mostly part only in their last digits, from the
+ * highest bit where their columns or rows differ at the coarser level.
+ */
+static char *
+nextpath(char *path, const struct leaf *p, const struct leaf *l)
+{
+	int m = l->level < p->level ? l->level : p->level, d = m;
+	uint64_t diff = (l->ix >> (l->level - m) ^ p->ix >> (p->level - m)) |
+	    (l->iy >> (l->level - m) ^ p->iy >> (p->level - m));
+
+	if (l->level == 0 || p->level == 0)
+		return cellpath(path, l->level, l->ix, l->iy);
+	for (; diff != 0; diff >>= 1)
+		d--;
+	for (; d < l->level; d++)
+		path[d] = pathdigit(l->level, d, l->ix, l->iy);
+	path[l->level] = '\0';
 	return path;
 }
 
@@ -245,20 +330,33 @@ unbalanced(const struct leaf *l, int k)
 }
 
 /*
- * Is cell (level, x, y) a kept leaf a few places from leaf i in preorder?
- * A sibling that is a leaf is, and then the set is not asked.
+ * Is the cell across side k of leaf i a sibling that is kept?  Siblings
+ * lie across a leaf's west side when it is a right child, its east side
+ * when a left one, and so on; when all four are kept leaves they are
+ * consecutive in preorder, so one comparison answers without the set.
+ * When this says no, the set does.
  */
 static int
-nearby(size_t i, int level, uint64_t x, uint64_t y)
+keptsibling(size_t i, int k, uint64_t x, uint64_t y)
 {
-	size_t j, lo = i > 3 ? i - 3 : 0, hi = i + 3 < nleaves ? i + 3 :
-	    nleaves - 1;
+	const struct leaf *l = &leaves[i], *s;
+	int right = l->ix & 1, upper = l->iy & 1;
+	size_t j;
 
-	for (j = lo; j <= hi; j++)
-		if (leaves[j].level == level && leaves[j].ix == x &&
-		    leaves[j].iy == y)
-			return 1;
-	return 0;
+	if (k == W && right && i >= 1)
+		j = i - 1;
+	else if (k == E && !right)
+		j = i + 1;
+	else if (k == S && upper && i >= 2)
+		j = i - 2;
+	else if (k == N && !upper)
+		j = i + 2;
+	else
+		return 0;
+	if (j >= nleaves)
+		return 0;
+	s = &leaves[j];
+	return s->level == l->level && s->ix == x && s->iy == y;
 }
 
 /* What lies across each side of a leaf: hanging midpoints and boundary. */
@@ -266,16 +364,20 @@ static void
 sides(size_t i)
 {
 	struct leaf *l = &leaves[i];
-	uint64_t nx, ny, cx, cy;
+	uint64_t nx, ny, cx, cy, last;
 	int k, h, c, a, level = l->level;
 
+	last = (UINT64_C(1) << level) - 1;
 	for (k = 0; k < 4; k++) {
-		if (!cellnext(level, l->ix, l->iy, dirx[k], diry[k], &nx,
-		    &ny)) {
+		/* the cell across side k, when inside the universe */
+		if ((k == W && l->ix == 0) || (k == E && l->ix == last) ||
+		    (k == S && l->iy == 0) || (k == N && l->iy == last)) {
 			l->bnd |= 3 << 2 * k;
 			continue;
 		}
-		if (nearby(i, level, nx, ny))
+		nx = l->ix + dirx[k];
+		ny = l->iy + diry[k];
+		if (keptsibling(i, k, nx, ny))
 			continue;
 		c = cellset_get(set, level, nx, ny);
 		if (c > 0)
@@ -343,9 +445,8 @@ pendput(uint64_t x, uint64_t y, uint32_t h)
 static uint32_t
 vertex(uint64_t x, uint64_t y)
 {
-	size_t before = corners_count(vt);
+	size_t before = npend > 0 ? corners_count(vt) : 0, k;
 	uint32_t id = corners_id(vt, x, y);
-	size_t k;
 
 	if (npend > 0 && id > before) {
 		k = pendslot(x, y);
@@ -371,34 +472,21 @@ leafpoints(const struct leaf *l, uint64_t px[8], uint64_t py[8])
 	py[4] = py[5] = py[6] = y + s;
 }
 
+/* An element of leaf l, its points' numbers kept in id by point. */
 static void
-addelem(const uint64_t *x, const uint64_t *y, int n, const int *p,
-    struct leaf *l)
+addelem(const uint64_t *x, const uint64_t *y, const struct shape *sh,
+    uint32_t *id, struct leaf *l)
 {
 	struct elem *e;
-	int i, k, lo = 0;
+	int k, p;
 
-	/* from the lowest point, then leftmost: one spelling per element */
-	for (i = 1; i < n; i++)
-		if (y[p[i]] < y[p[lo]] ||
-		    (y[p[i]] == y[p[lo]] && x[p[i]] < x[p[lo]]))
-			lo = i;
-	if (n == 4 && alltri) {	/* along the diagonal from the lowest */
-		int t1[3], t2[3];
-
-		for (i = 0; i < 3; i++) {
-			t1[i] = p[(lo + i) % 4];
-			t2[i] = p[(lo + (i ? i + 1 : 0)) % 4];
-		}
-		addelem(x, y, 3, t1, l);
-		addelem(x, y, 3, t2, l);
-		return;
-	}
 	elems = grow(elems, &elemcap, nelems, sizeof(*elems));
 	e = &elems[nelems++];
 	e->v[3] = 0;
-	for (k = 0; k < n; k++)
-		e->v[k] = vertex(x[p[(lo + k) % n]], y[p[(lo + k) % n]]);
+	for (k = 0; k < sh->n; k++) {
+		p = sh->p[k];
+		e->v[k] = id[p] = vertex(x[p], y[p]);
+	}
 	l->nel++;
 }
 
@@ -418,38 +506,31 @@ meshleaf(struct leaf *l)
 {
 	uint64_t px[8], py[8];
 	uint32_t id[8], h = 0;
-	const struct tmpl *t;
-	int i, k, r, q[4];
+	int i, k, m = conform ? l->hang : 0;
 
 	leafpoints(l, px, py);
 	corners_at(vt, px[0], py[0]);
-	t = conform ? bymask[l->hang].t : bymask[0].t;
-	r = conform ? bymask[l->hang].turn : 0;
-	for (i = 0; i < t->nel; i++) {
-		for (k = 0; k < t->el[i].n; k++)
-			q[k] = (t->el[i].p[k] + 2 * r) % 8;
-		addelem(px, py, t->el[i].n, q, l);
-	}
-	for (k = 0; k < 8; k += 2)
-		id[k] = corners_find(vt, px[k], py[k]);
+	/* every template uses the four corners: addelem numbers them */
+	for (i = 0; i < bymask[m].nel; i++)
+		addelem(px, py, &bymask[m].el[i], id, l);
+	if (conform && format != MSH && format != TRIANGLE)
+		return;
 	for (k = 0; k < 4; k++) {
-		int m = 2 * k + 1, b = (2 * k + 2) % 8;
+		int mid = 2 * k + 1, b = (2 * k + 2) % 8;
 
-		id[m] = 0;
-		if (l->hang & 1 << k) {
-			id[m] = corners_find(vt, px[m], py[m]);
-			if (!conform) {
-				hangs = grow(hangs, &hangcap, nhangs,
-				    sizeof(*hangs));
-				hangs[nhangs].v = id[m];
-				hangs[nhangs].a = id[2 * k];
-				hangs[nhangs].b = id[b];
-				hangs[nhangs].x = px[m];
-				hangs[nhangs].y = py[m];
-				h = ++nhangs;
-				if (id[m] == 0)
-					pendput(px[m], py[m], h);
-			}
+		if (!(l->hang & 1 << k))
+			id[mid] = 0;
+		else if (!conform) {	/* numbered by finer leaves, or not yet */
+			id[mid] = corners_find(vt, px[mid], py[mid]);
+			hangs = grow(hangs, &hangcap, nhangs, sizeof(*hangs));
+			hangs[nhangs].v = id[mid];
+			hangs[nhangs].a = id[2 * k];
+			hangs[nhangs].b = id[b];
+			hangs[nhangs].x = px[mid];
+			hangs[nhangs].y = py[mid];
+			h = ++nhangs;
+			if (id[mid] == 0)
+				pendput(px[mid], py[mid], h);
 		}
 		if (format != MSH && format != TRIANGLE)
 			continue;
@@ -457,9 +538,9 @@ meshleaf(struct leaf *l)
 			addseg(id[2 * k], id[b], 0);
 		else {
 			if (l->bnd & 1 << 2 * k)
-				addseg(id[2 * k], id[m], h);
+				addseg(id[2 * k], id[mid], h);
 			if (l->bnd & 2 << 2 * k)
-				addseg(id[m], id[b], h);
+				addseg(id[mid], id[b], h);
 		}
 	}
 }
@@ -738,7 +819,8 @@ writeqtree(size_t nv, const uint32_t *inv)
 		c.ix = l->ix;
 		c.iy = l->iy;
 		c.class = l->class;
-		c.path = cellpath(path, l->level, l->ix, l->iy);
+		c.path = i == 0 ? cellpath(path, l->level, l->ix, l->iy) :
+		    nextpath(path, &leaves[i - 1], l);
 		c.size = u.size;
 		qt_cell(&c, first);
 		first += l->nel;
