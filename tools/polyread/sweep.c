@@ -400,6 +400,14 @@ testneighbours(uint32_t lo, uint32_t hi)
 	if (!samepoint(e->b, f->b) && (e->b.x <= f->b.x ?
 	    orient(f->a, f->b, e->b) < 0 : orient(e->a, e->b, f->b) > 0))
 		return;
+	/*
+	 * A ring's two edges that end at its vertex, as at every vertex where
+	 * the sweep meets the ring last: testpair would find them apart but
+	 * there by this one turn, and then adjacent.
+	 */
+	if (samepoint(e->b, f->b) && !samepoint(e->a, f->a) &&
+	    adjacent(lo, hi) && orient(e->b, e->a, f->a) != 0)
+		return;
 	testpair(lo, hi);
 }
 
