@@ -30,9 +30,14 @@
  * of that %.15g are the shortest ones; a subnormal gets its shortest digits
  * ("5e-324", where %.15g would add noise).
  *
+ * Before all that, fifteen() tries the common case, a double read from a
+ * decimal of at most 15 digits: one product by a power of ten, rounded,
+ * and checked exactly to read back.
+ *
  * The powers of ten are those of five in lib/pow5.c, which
  * tools/genpow5.c computes with exact integer arithmetic.
  */
+#include <float.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -249,28 +254,50 @@ ndigits(uint64_t m)
 	    (m >= 1000000000000000) + (m >= 10000000000000000);
 }
 
-/*
- * Writes -m 10^k (neg) or m 10^k as %.Pg prints it, where m < 10^17 has
- * no trailing zero and P = max(15, number of digits of m).  The text is
- * put together in out with copies of fixed size, a few moves where copies
- * of the exact size would call memcpy; the bytes copied past the digits
- * are never shown.  The longest result, "-d.16digitse-308", takes 25 of
- * buf's 32 bytes.
- */
-static char *
-layout(char *buf, int neg, uint64_t m, int k)
+/* All 17 places of m < 10^17, leading zeros included: no loop on length. */
+static inline void
+put17(char *digs, uint64_t m)
 {
-	char digs[40], out[64], *d, *p = out;
-	int n, x;
-
-	/* All 17 places, then the n that count: no loop on the length. */
-	n = ndigits(m);
 	digs[0] = '0' + (char)(m / 10000000000000000);
 	m %= 10000000000000000;
 	put8(digs + 1, (uint32_t)(m / 100000000));
 	put8(digs + 9, (uint32_t)(m % 100000000));
-	d = digs + 17 - n;
-	x = k + n - 1;		/* the exponent %e would show */
+}
+
+/*
+ * Copies the len bytes of out (len <= 32) to buf in two copies of a fixed
+ * size that overlap, which compile to a few moves where one copy of the
+ * exact size would call memcpy.
+ */
+static inline void
+copyout(char *buf, const char *out, size_t len)
+{
+	if (len >= 16) {
+		memcpy(buf, out, 16);
+		memcpy(buf + len - 16, out + len - 16, 16);
+	} else if (len >= 8) {
+		memcpy(buf, out, 8);
+		memcpy(buf + len - 8, out + len - 8, 8);
+	} else if (len >= 4) {
+		memcpy(buf, out, 4);
+		memcpy(buf + len - 4, out + len - 4, 4);
+	} else
+		memcpy(buf, out, len);
+}
+
+/*
+ * Writes -D 10^k (neg) or D 10^k as %.Pg prints it, where D is the n
+ * digits at d, the last not a zero, n <= 17, and P = max(15, n).  The text
+ * is put together in out with copies of fixed size; the bytes copied past
+ * the digits (d must have 32 readable bytes) are never shown.  The longest
+ * result, "-d.16digitse-308", takes 25 of buf's 32 bytes.
+ */
+static char *
+layout(char *buf, int neg, const char *d, int n, int k)
+{
+	char out[64], *p = out;
+	int x = k + n - 1;	/* the exponent %e would show */
+
 	*p = '-';
 	p += neg;
 	if (x < -4 || x >= (n > 15 ? n : 15)) {
@@ -304,9 +331,51 @@ layout(char *buf, int neg, uint64_t m, int k)
 		p += n + 1;
 	}
 	*p = '\0';
-	memcpy(buf, out, (size_t)(p - out) + 1);
+	copyout(buf, out, (size_t)(p - out) + 1);
 	return buf + (p - out);
 }
+
+#if FLT_EVAL_METHOD == 0
+/*
+ * The common case, a number typed or printed with at most 15 significant
+ * digits.  If D = m 10^-e with 10^14 <= m < 10^15 reads back as a (a
+ * normal double, a > 0), D is the only decimal of at most 15 significant
+ * digits that does: two such decimals lie more than 10^-15 of their size
+ * apart, and the decimals that read back as a lie in an interval narrower
+ * than 2^-52 a.  So D is the decimal that shortest() finds, since the
+ * least precision that reads back is then at most 15.  Below 2^53 and
+ * 10^22, m and 10^|e| are doubles and one correctly rounded product or
+ * quotient gives D's double (Clinger's fast path, as parsereal reads), so
+ * whether D reads back is decided exactly; m is a 10^e rounded.  Returns 0
+ * when D does not read back or the powers are out of reach, for
+ * shortest() to decide.
+ */
+static int
+fifteen(double a, int bexp, uint64_t *mp, int *ep)
+{
+	/* 10^(14 - e) <= 2^(bexp - 1023) <= a: t >= 10^14 */
+	int e = 14 - flog10pow2(bexp - 1023);
+	double t, back;
+	uint64_t m;
+
+	if (e < -21 || e > 22)
+		return 0;
+	t = e >= 0 ? a * exact10[e] : a / exact10[-e];
+	if (t >= 999999999999999.5) {
+		e--;	/* a had one digit more before the point */
+		t = e >= 0 ? a * exact10[e] : a / exact10[-e];
+	}
+	m = (uint64_t)(t + 0.5);
+	if (m < 100000000000000 || m >= 1000000000000000)
+		return 0;
+	back = e >= 0 ? (double)m / exact10[e] : (double)m * exact10[-e];
+	if (back != a)
+		return 0;
+	*mp = m;
+	*ep = e;
+	return 1;
+}
+#endif
 
 /*
  * Writes the shortest decimal that reads back as v (finite), laid out as %g
@@ -318,7 +387,8 @@ char *
 fmtreal(char *buf, double v)
 {
 	uint64_t bits, frac, c, m;
-	int bexp, q, k, doubt = 0;
+	int bexp, q, k, n, doubt = 0;
+	char digs[48];
 
 	memcpy(&bits, &v, sizeof(bits));
 	if ((bits & ~((uint64_t)1 << 63)) == 0) {
@@ -328,6 +398,16 @@ fmtreal(char *buf, double v)
 	}
 	frac = bits & (((uint64_t)1 << 52) - 1);
 	bexp = (int)(bits >> 52 & 0x7ff);
+#if FLT_EVAL_METHOD == 0
+	if (bexp != 0 && fifteen(v < 0 ? -v : v, bexp, &m, &k)) {
+		/* m's 15 digits at digs + 2, its trailing zeros dropped */
+		put17(digs, m);
+		for (n = 15; digs[1 + n] == '0'; n--)
+			;
+		return layout(buf, (int)(bits >> 63), digs + 2, n,
+		    15 - n - k);
+	}
+#endif
 	if (bexp == 0) {
 		c = frac;
 		q = -1074;
@@ -338,7 +418,9 @@ fmtreal(char *buf, double v)
 	k = shortest(c, q, frac == 0 && bexp > 1, &m, &doubt);
 	if (doubt)
 		return slowfmt(buf, v, bexp != 0);
-	return layout(buf, (int)(bits >> 63), m, k);
+	n = ndigits(m);
+	put17(digs, m);
+	return layout(buf, (int)(bits >> 63), digs + 17 - n, n, k);
 }
 
 /* The number of digits of u < 10^8. */

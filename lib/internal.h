@@ -33,6 +33,9 @@ mul64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
 #endif
 }
 
+/* parse.c, for fmt.c: 10^0 to 10^22, the powers of ten a double holds. */
+extern const double exact10[23];
+
 /* geom.c: error-free transformations, for area.c's exact sums */
 void	 two_sum(double, double, double *, double *);
 void	 two_product(double, double, double *, double *);

@@ -44,8 +44,8 @@
 /* Digits kept for the exact comparison: see exact(). */
 #define MAXDIG	800
 
-/* The powers of ten that a double holds exactly. */
-static const double exact10[] = {
+/* The powers of ten that a double holds exactly (fmt.c reads them too). */
+const double exact10[] = {
 	1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12,
 	1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22
 };

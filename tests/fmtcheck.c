@@ -7,7 +7,8 @@
  * The first form checks a fixed set of hard cases (every power of two and
  * its neighbours, every power of ten, the ends of the subnormal and normal
  * ranges), then count random bit patterns (NaN and Inf skipped) and count
- * cell corners x0 + i * ldexp(size, -level) as cellcoord makes them.  Each
+ * cell corners x0 + i * ldexp(size, -level) as cellcoord makes them, and
+ * count decimals of up to 17 digits and their neighbours.  Each
  * mismatch is printed; the last line is "fmtcheck: N passed, M failed".
  * The second form prints fmtreal of each number (strtod syntax, so hex
  * floats such as 0x1p-1074 are welcome; NaN and Inf are refused), one
@@ -206,6 +207,31 @@ coordinate(int positive)
 	return !positive && (rnd() & 1) ? -v : v;
 }
 
+/*
+ * Decimals of 1 to 17 digits such as people and programs write, and
+ * their neighbours: fmtreal's fast way takes those of at most 15 digits
+ * and must leave the neighbours, which read back from no such decimal.
+ */
+static void
+shortdecimals(unsigned long n)
+{
+	char s[48];
+	unsigned long done;
+
+	for (done = 0; done < n; done += 4) {
+		int digits = 1 + (int)rndupto(16);
+		uint64_t lo = 1, m;
+		int i;
+
+		for (i = 1; i < digits; i++)
+			lo *= 10;
+		m = lo + rndupto(9 * lo - 1);
+		snprintf(s, sizeof(s), "%llue%d", (unsigned long long)m,
+		    (int)rndupto(60) - 40);
+		checkaround(strtod(s, NULL));
+	}
+}
+
 static void
 cellcoords(unsigned long n)
 {
@@ -303,6 +329,7 @@ main(int argc, char *argv[])
 	hardcases();
 	randombits(n);
 	cellcoords(n);
+	shortdecimals(n);
 	randomdecimals(n);
 	integers(n);
 	printf("fmtcheck: %lu passed, %lu failed\n", passed, failed);

@@ -400,6 +400,14 @@ testneighbours(uint32_t lo, uint32_t hi)
 	if (!samepoint(e->b, f->b) && (e->b.x <= f->b.x ?
 	    orient(f->a, f->b, e->b) < 0 : orient(e->a, e->b, f->b) > 0))
 		return;
+	/*
+	 * A ring's two edges that end at its vertex, as at every vertex where
+	 * the sweep meets the ring last: testpair would find them apart but
+	 * there by this one turn, and then adjacent.
+	 */
+	if (samepoint(e->b, f->b) && !samepoint(e->a, f->a) &&
+	    adjacent(lo, hi) && orient(e->b, e->a, f->a) != 0)
+		return;
 	testpair(lo, hi);
 }
 
@@ -511,9 +519,9 @@ uncrossed(struct point p, const uint32_t *from, size_t nfrom,
 }
 
 /*
- * Passes the vertex p, where the edges leave[] start and, when it is not
- * NONE, the edge ending ends; near is an edge on the sweep line likely
- * close to p, or NONE.  Every edge that holds p (ending there, passing
+ * Passes the point p of nvert vertices, where the edges leave[] start
+ * and, when it is not NONE, the edge ending ends; near is an edge on the
+ * sweep line likely close to p, or NONE.  Every edge that holds p (ending there, passing
  * through or leaving it) is tested against every other, bottom to top in
  * each group, which records every touch at p and finds every overlap that
  * starts there.  Then the edges that leave p take the place of those that
@@ -523,11 +531,12 @@ uncrossed(struct point p, const uint32_t *from, size_t nfrom,
  * tests so far have made sure of.
  */
 static void
-sweepvertex(struct point p, uint32_t *leave, size_t nleave, uint32_t ending,
-    uint32_t near)
+sweepvertex(struct point p, size_t nvert, uint32_t *leave, size_t nleave,
+    uint32_t ending, uint32_t near)
 {
 	uint32_t below, above, t;
 	size_t i, j, n, nmid;
+	int o;
 
 	nhere = 0;
 	/* the edges through p: together on the line, around one that ends */
@@ -551,6 +560,36 @@ sweepvertex(struct point p, uint32_t *leave, size_t nleave, uint32_t ending,
 		testneighbours(below, leave[0]);
 		testneighbours(leave[0], above);
 		replace(here[0], leave[0]);
+		return;
+	}
+	/*
+	 * One vertex alone at p, where its ring's two edges both start or
+	 * both end, the other two common cases: one turn between their far
+	 * ends orders them and is the whole of their test, as they meet at
+	 * p alone unless collinear.  Collinear, they take the general way,
+	 * which tells the overlap.  (Two vertices at p would bring four
+	 * edges, counting one that passes through as two; edges that end at
+	 * p end at a vertex there, so with one vertex the two in here that
+	 * end at p are its own.)
+	 */
+	if (nmid == 0 && nleave == 2 && (o = orient(p, edges[leave[0]].b,
+	    edges[leave[1]].b)) != 0) {
+		uint32_t lo = leave[o < 0], hi = leave[o > 0];
+
+		nest(lo, below);
+		nest(hi, lo);
+		testneighbours(below, lo);
+		testneighbours(hi, above);
+		insertabove(below, lo);
+		insertabove(lo, hi);
+		return;
+	}
+	if (nvert == 1 && nmid == 2 && nleave == 0 &&
+	    samepoint(edges[here[0]].b, p) && samepoint(edges[here[1]].b, p) &&
+	    orient(p, edges[here[0]].a, edges[here[1]].a) != 0) {
+		removeedge(here[0]);
+		removeedge(here[1]);
+		testneighbours(below, above);
 		return;
 	}
 	sortfrom(leave, nleave, p);
@@ -762,7 +801,7 @@ sweep(uint32_t n)
 			else
 				ending = prev;
 		}
-		sweepvertex(p, leave, nleave, ending, ending != NONE ? NONE :
+		sweepvertex(p, g - i, leave, nleave, ending, ending != NONE ? NONE :
 		    nearedge(ord[i].k, p));
 	}
 	free(leave);

@@ -79,7 +79,9 @@ xynumber(struct src *s, const char *q, const char **end)
 
 	if (rc == -2)
 		badtoken(s, "number out of range");
-	if (rc < 0 || !(isspace((unsigned char)**end) || **end == '\0'))
+	/* the usual ends first, before isspace's call */
+	if (rc < 0 || !(**end == ' ' || **end == '\n' ||
+	    isspace((unsigned char)**end) || **end == '\0'))
 		badtoken(s, "not a number");
 	return v;
 }
