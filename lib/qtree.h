@@ -59,6 +59,53 @@ int	 ring_contains(const struct point *, size_t, struct point,
 	    struct point);
 
 /*
+ * arc.c: circular arcs from a through m to b, three points not on one line,
+ * decided exactly (intervals first, integers when they cannot tell).  The
+ * arc is the part of its circle on m's side of the chord line a-b; its
+ * circular segment is the open region between chord and arc.  arc_init
+ * gives -1 for three points on a line.  arc_power gives the sign of |p -
+ * C|^2 - r^2 (-1 inside the circle), arc_cmpcentre that of v - C's
+ * coordinate on axis 0 (x) or 1 (y), arc_powerline that of the power at
+ * (v, Cy) (axis 0) or (Cx, v) (axis 1), arc_orientline orient2d(a, b, z)
+ * for z those points, or C (axis 2).  arc_meets says whether the arc meets
+ * an open box, given its corners' orientations against a->b and powers
+ * (lower left, lower right, upper left, upper right); arc_insegment
+ * whether (x, y) + (d, d^2), d > 0 infinitesimal, lies in the segment.
+ * The box is conservative: the arc lies strictly inside it.
+ */
+struct interval {
+	double	lo, hi;
+};
+
+struct arc {
+	struct point	 a, m, b;
+	int		 sd;	/* orient2d(a, b, m): m's side */
+	int		 oc;	/* orient2d(a, b, C) */
+	struct interval	 ibx, iby, imx, imy, id, iux, iuy;
+	double		 xmin, ymin, xmax, ymax;
+	/* the filter: C within ec of (cx, cy); r^2 in (tin, tout) */
+	double		 cx, cy, ec, tin, tout;
+};
+int	 arc_init(struct arc *, struct point, struct point, struct point);
+int	 arc_power(const struct arc *, double, double);
+int	 arc_cmpcentre(const struct arc *, int, double);
+int	 arc_powerline(const struct arc *, int, double);
+int	 arc_orientline(const struct arc *, int, double);
+int	 arc_centreside(const struct arc *);
+int	 arc_insegment(const struct arc *, double, double, int, int);
+int	 arc_meets(const struct arc *, double, double, double, double,
+	    const signed char[4], const signed char[4]);
+
+/* The measures of an arc and its circular segment, in floating point. */
+struct arcmeasures {
+	double	r, theta;	/* radius, central angle (0, 2 pi) */
+	double	len;		/* the arc's length */
+	double	area;		/* its circular segment's, positive */
+	double	gx, gy;		/* that segment's centroid */
+};
+void	 arc_measures(const struct arc *, struct arcmeasures *);
+
+/*
  * cell.c: cell arithmetic.  A cell's corner is X0 + IX * h in doubles,
  * h = SIZE / 2^LEVEL; a path has one digit per level, "." at the root.
  */
@@ -137,11 +184,19 @@ enum qtkind {
 	QT_VERTEX, QT_ELEM, QT_OBJECT, QT_OP, QT_OTHER
 };
 
+/*
+ * A ring's edge i runs from v[i] to v[i + 1], the last back to v[0]; when
+ * arc[i] (arc NULL when narcs is 0) it is the arc from v[i] through mid[i]
+ * to the next vertex.
+ */
 struct ring {
 	long		 id;
 	int		 hole;
 	size_t		 n;
 	struct point	*v;
+	size_t		 narcs;
+	unsigned char	*arc;
+	struct point	*mid;
 };
 
 struct meshvertex {		/* vertex ID X Y */
@@ -198,7 +253,8 @@ enum {
 	QT_NEEDUNIVERSE = 1,	/* a stream without a universe is an error */
 	QT_VERBOSE = 2,		/* progress on stderr, as -v asks */
 	QT_UNSEALED = 4,	/* no seal: see above */
-	QT_CONCAT = 8		/* sealed streams one after another, or none */
+	QT_CONCAT = 8,		/* sealed streams one after another, or none */
+	QT_ARCS = 16		/* rings may have arcs; else they are refused */
 };
 
 struct qtreader *qt_open(FILE *, const char *, int);

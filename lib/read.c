@@ -57,6 +57,7 @@ struct qtreader {
 	struct ring	 ring;
 	size_t		 ringcap, vleft;
 	long		 ringline;
+	int		 lasta;		/* the last ring record was an a */
 	struct buf	 ringtext;
 	/* a combined stream's objects so far, and its op record */
 	long		 nobjects;
@@ -103,6 +104,8 @@ qt_close(struct qtreader *r)
 		fclose(r->fp);
 	free(r->buf);
 	free(r->ring.v);
+	free(r->ring.arc);
+	free(r->ring.mid);
 	free(r->ringtext.s);
 	free(r->type);
 	free(r);
@@ -572,6 +575,8 @@ ringrec(struct qtreader *r)
 	r->vleft = intfield(r, r->field[3], "vertex count", 3,
 	    (long long)1 << 40);
 	g->n = 0;
+	g->narcs = 0;
+	r->lasta = 0;
 	r->nrings++;
 	r->ringline = r->lineno;
 	r->ringtext.len = 0;
@@ -615,23 +620,77 @@ oprec(struct qtreader *r, struct qtrec *rec)
 	r->haveop = 1;
 }
 
-/* A vertex of the ring being read; the last one completes it. */
+/* The arc of the ring's edge i, which ends at vertex j, from line. */
+static void
+checkarc(struct qtreader *r, size_t i, size_t j, long line)
+{
+	const struct ring *g = &r->ring;
+	struct point a = g->v[i], m = g->mid[i], b = g->v[j];
+
+	if (orient2d(a.x, a.y, b.x, b.y, m.x, m.y) != 0)
+		return;
+	if (a.x == b.x && a.y == b.y && a.x == m.x && a.y == m.y)
+		errat(r->name, line, "arc of zero radius: its three points "
+		    "are one");
+	if (a.x == b.x && a.y == b.y)
+		errat(r->name, line, "arc from a vertex back to itself (a "
+		    "circle is two arcs)");
+	errat(r->name, line, "arc through three points on a line (a "
+	    "straight edge needs no a record)");
+}
+
+/*
+ * A v or a record of the ring being read; the last one completes it.  An
+ * a record gives a point on the arc from the vertex before it to the one
+ * after it, the first vertex after the last.  A ring of at least 3
+ * records that starts with a v and has no two a in a row has at least two
+ * vertices, and an arc when it has only two.
+ */
 static int
-vrec(struct qtreader *r)
+vrec(struct qtreader *r, int isa)
 {
 	struct ring *g = &r->ring;
+	double x, y;
 
 	nfields(r, 3, 3);
 	if (r->vleft == 0)
-		qt_fail(r, "v record outside a ring");
+		qt_fail(r, "%s record outside a ring", isa ? "a" : "v");
 	if (g->n == r->ringcap) {
 		r->ringcap = r->ringcap ? 2 * r->ringcap : 64;
 		g->v = xreallocarray(g->v, r->ringcap, sizeof(*g->v));
+		g->arc = xreallocarray(g->arc, r->ringcap, sizeof(*g->arc));
+		g->mid = xreallocarray(g->mid, r->ringcap, sizeof(*g->mid));
 	}
-	g->v[g->n].x = realfield(r, r->field[1], "x");
-	g->v[g->n].y = realfield(r, r->field[2], "y");
-	g->n++;
-	return --r->vleft == 0;
+	x = realfield(r, r->field[1], "x");
+	y = realfield(r, r->field[2], "y");
+	if (isa) {
+		if (!(r->flags & QT_ARCS))
+			qt_fail(r, "ring %ld has an arc (a record), which %s "
+			    "does not handle", g->id, progname);
+		if (g->n == 0)
+			qt_fail(r, "ring %ld starts with an a record (a ring "
+			    "starts at a vertex)", g->id);
+		if (r->lasta)
+			qt_fail(r, "two a records in a row in ring %ld",
+			    g->id);
+		g->arc[g->n - 1] = 1;
+		g->mid[g->n - 1].x = x;
+		g->mid[g->n - 1].y = y;
+		g->narcs++;
+	} else {
+		g->v[g->n].x = x;
+		g->v[g->n].y = y;
+		g->arc[g->n] = 0;
+		g->n++;
+		if (r->lasta)
+			checkarc(r, g->n - 2, g->n - 1, r->lineno - 1);
+	}
+	r->lasta = isa;
+	if (--r->vleft > 0)
+		return 0;
+	if (isa)
+		checkarc(r, g->n - 1, 0, r->lineno);
+	return 1;
 }
 
 static void
@@ -712,6 +771,7 @@ static const struct {
 	enum qtkind	 kind;
 } tags[] = {
 	{ "leaf", 4, QT_LEAF }, { "node", 4, QT_NODE }, { "v", 1, QT_RING },
+	{ "a", 1, QT_RING },
 	{ "ring", 4, QT_RING }, { "vertex", 6, QT_VERTEX },
 	{ "elem", 4, QT_ELEM }, { "level", 5, QT_LEVEL },
 	{ "universe", 8, QT_UNIVERSE }, { "object", 6, QT_OBJECT },
@@ -770,7 +830,7 @@ static enum qtkind
 body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 {
 	size_t taglen = strcspn(line, " ");
-	int isv = taglen == 1 && line[0] == 'v';
+	int isv = taglen == 1 && (line[0] == 'v' || line[0] == 'a');
 
 	rec->kind = tagkind(line, taglen);
 	if (r->vleft > 0 && !isv)
@@ -806,7 +866,7 @@ body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 	case QT_RING:	/* a ring or a v record: the ring comes at its last v */
 		if (!isv)
 			ringrec(r);
-		else if (vrec(r))
+		else if (vrec(r, line[0] == 'a'))
 			break;
 		unsplit(r);
 		append(&r->ringtext, line, len);
@@ -838,7 +898,7 @@ body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 		rec->line = r->ringtext.s;
 		rec->len = r->ringtext.len;
 		rec->lineno = r->ringline;
-		rec->nrec = 1 + r->ring.n;
+		rec->nrec = 1 + r->ring.n + r->ring.narcs;
 	}
 	return rec->kind;
 }

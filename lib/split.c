@@ -13,6 +13,15 @@
  * The edges of a cell are a list per level, indices into the edges: the
  * lists of one path down the tree, each level's overwritten when the level
  * above moves another child's edges down.
+ *
+ * An arc counts for parity as its chord and its circular segment: the
+ * even-odd region of a ring is that of its straight edges and chords,
+ * changed inside each arc's segment (the boundaries, summed mod 2, are the
+ * ring's).  So the chord's crossings are counted as a straight edge's, and
+ * the parity flips between two points when one lies in the segment and the
+ * other does not.  An arc that misses a cell's interior leaves the two
+ * counts equal there, since inside the cell the segment's boundary is the
+ * chord alone: only the cell's listed arcs need the segment test.
  */
 #include <math.h>
 #include <stdint.h>
@@ -22,8 +31,9 @@
 #include "qtree.h"
 
 struct edge {
-	double	ax, ay, bx, by;
-	double	xmin, ymin, xmax, ymax;
+	double	ax, ay, bx, by;		/* an arc's chord */
+	double	xmin, ymin, xmax, ymax;	/* an arc's box (lib/arc.c) */
+	int32_t	arc;			/* into sp->arcs; -1 for a segment */
 };
 
 /* Per level: the cell's edges and, per edge, the children it meets. */
@@ -39,6 +49,8 @@ struct splitter {
 	struct edge	*edges;
 	unsigned char	*elevel;	/* per edge: its ring's level */
 	size_t		 nedges;
+	struct arc	*arcs;
+	size_t		 narcs;
 	size_t		*rfirst;	/* per ring: its first edge, and one */
 	size_t		 nrings;	/* past the last ring's last */
 	struct worklist	 list[QT_MAXLEVEL + 2];
@@ -71,6 +83,7 @@ split_free(struct splitter *sp)
 		free(sp->list[i].masks);
 	}
 	free(sp->edges);
+	free(sp->arcs);
 	free(sp->elevel);
 	free(sp->rfirst);
 	free(sp);
@@ -94,6 +107,20 @@ split_addring(struct splitter *sp, const struct ring *ring)
 		e->ax = a.x, e->ay = a.y, e->bx = b.x, e->by = b.y;
 		e->xmin = fmin(a.x, b.x), e->xmax = fmax(a.x, b.x);
 		e->ymin = fmin(a.y, b.y), e->ymax = fmax(a.y, b.y);
+		e->arc = -1;
+		if (ring->narcs > 0 && ring->arc[i]) {
+			struct arc *c;
+
+			sp->arcs = xreallocarray(sp->arcs, sp->narcs + 1,
+			    sizeof(*sp->arcs));
+			c = &sp->arcs[sp->narcs];
+			if (arc_init(c, a, ring->mid[i], b) < 0)
+				die(1, "ring %ld: arc through three points "
+				    "on a line", ring->id);
+			e->arc = (int32_t)sp->narcs++;
+			e->xmin = c->xmin, e->xmax = c->xmax;
+			e->ymin = c->ymin, e->ymax = c->ymax;
+		}
 		sp->elevel[sp->nedges++] = QT_MAXLEVEL;
 	}
 	sp->rfirst = xreallocarray(sp->rfirst, sp->nrings + 2,
@@ -154,11 +181,15 @@ rootparity(const struct splitter *sp)
 
 	for (i = 0; i < sp->nedges; i++) {
 		const struct edge *e = &sp->edges[i];
-		int s;
+		int o = orient(e, sp->u.x0, sp->u.y0), s;
 
+		if (e->arc >= 0)
+			inside ^= arc_insegment(&sp->arcs[e->arc], sp->u.x0,
+			    sp->u.y0, o, arc_power(&sp->arcs[e->arc],
+			    sp->u.x0, sp->u.y0));
 		if ((e->ay > sp->u.y0) == (e->by > sp->u.y0))
 			continue;
-		s = nudged(e, orient(e, sp->u.x0, sp->u.y0));
+		s = nudged(e, o);
 		if (e->by > e->ay ? s > 0 : s < 0)
 			inside ^= 1;
 	}
@@ -185,6 +216,19 @@ rootlist(struct splitter *sp)
 		o[1] = orient(e, x1, u->y0);
 		o[2] = orient(e, u->x0, y1);
 		o[3] = orient(e, x1, y1);
+		if (e->arc >= 0) {
+			const struct arc *a = &sp->arcs[e->arc];
+			signed char so[4], sf[4];
+
+			for (c = 0; c < 4; c++) {
+				so[c] = o[c];
+				sf[c] = arc_power(a, c & 1 ? x1 : u->x0,
+				    c & 2 ? y1 : u->y0);
+			}
+			if (arc_meets(a, u->x0, u->y0, x1, y1, so, sf))
+				sp->list[0].edges[n++] = i;
+			continue;
+		}
 		for (c = 0; c < 4; c++) {
 			pos |= o[c] > 0;
 			neg |= o[c] < 0;
@@ -203,6 +247,59 @@ split_root(struct splitter *sp, int *inside)
 }
 
 /*
+ * An arc of the cell whose children's corners are the grid gx x gy: the
+ * children whose open interiors it meets, as a mask, and its part of the
+ * parities' changes along the paths (par: bottom, left, middle).  s holds
+ * the chord's orientations at the grid points, 2 where not yet known.
+ */
+static int
+arcchildren(const struct splitter *sp, const struct edge *e,
+    const double gx[3], const double gy[3], const int inx[2],
+    const int iny[2], signed char s[9], int par[3])
+{
+	const struct arc *a = &sp->arcs[e->arc];
+	signed char f[9] = { 2, 2, 2, 2, 2, 2, 2, 2, 2 }, so[4], sf[4];
+	static const int pt[4] = { 0, 1, 3, 4 };	/* the paths' ends */
+	int q, c, m = 0, seg[4];
+
+	for (q = 0; q < 4; q++) {
+		int i = q & 1, j = q >> 1;
+
+		if (!inx[i] || !iny[j])
+			continue;
+		for (c = 0; c < 4; c++) {
+			int gi = i + (c & 1), gj = j + (c >> 1), g = 3 * gj + gi;
+
+			if (s[g] == 2)
+				s[g] = orient(e, gx[gi], gy[gj]);
+			if (f[g] == 2)
+				f[g] = arc_power(a, gx[gi], gy[gj]);
+			so[c] = s[g];
+			sf[c] = f[g];
+		}
+		if (arc_meets(a, gx[i], gy[j], gx[i + 1], gy[j + 1], so, sf))
+			m |= 1 << q;
+	}
+	for (c = 0; c < 4; c++) {
+		int g = pt[c];
+		double x = gx[g % 3], y = gy[g / 3];
+
+		if (s[g] == 2)
+			s[g] = orient(e, x, y);
+		seg[c] = 0;
+		if (nudged(e, s[g]) != a->sd)
+			continue;
+		if (f[g] == 2)
+			f[g] = arc_power(a, x, y);
+		seg[c] = arc_insegment(a, x, y, s[g], f[g]);
+	}
+	par[0] ^= seg[0] ^ seg[1];
+	par[1] ^= seg[0] ^ seg[2];
+	par[2] ^= seg[1] ^ seg[3];
+	return m;
+}
+
+/*
  * Sorts the edges of cell (level, ix, iy) into its children: the level's
  * masks get, per edge, a bit for each child whose open interior it meets.
  * The parities of the children's reference points go to parity[0..3].
@@ -214,7 +311,7 @@ split_children(struct splitter *sp, int level, uint64_t ix, uint64_t iy,
 	const uint32_t *list = sp->list[level].edges;
 	unsigned char *mask = sp->list[level].masks;
 	double gx[3], gy[3];
-	int bottom = 0, left = 0, middle = 0;
+	int par[3] = { 0, 0, 0 };	/* bottom, left, middle */
 	size_t k;
 
 	for (k = 0; k < 3; k++) {
@@ -246,7 +343,9 @@ split_children(struct splitter *sp, int level, uint64_t ix, uint64_t iy,
 				continue;
 			}
 		}
-		for (q = 0; q < 4; q++) {
+		if (e->arc >= 0)
+			m = arcchildren(sp, e, gx, gy, inx, iny, s, par);
+		else for (q = 0; q < 4; q++) {
 			int i = q & 1, j = q >> 1, pos = 0, neg = 0, c;
 
 			if (!inx[i] || !iny[j])
@@ -274,27 +373,27 @@ split_children(struct splitter *sp, int level, uint64_t ix, uint64_t iy,
 				s[0] = orient(e, gx[0], gy[0]);
 			if (s[1] == 2)
 				s[1] = orient(e, gx[1], gy[0]);
-			bottom ^= nudged(e, s[0]) != nudged(e, s[1]);
+			par[0] ^= nudged(e, s[0]) != nudged(e, s[1]);
 		}
 		if ((e->ax > gx[0]) != (e->bx > gx[0])) {
 			if (s[0] == 2)
 				s[0] = orient(e, gx[0], gy[0]);
 			if (s[3] == 2)
 				s[3] = orient(e, gx[0], gy[1]);
-			left ^= nudged(e, s[0]) != nudged(e, s[3]);
+			par[1] ^= nudged(e, s[0]) != nudged(e, s[3]);
 		}
 		if ((e->ax > gx[1]) != (e->bx > gx[1])) {
 			if (s[1] == 2)
 				s[1] = orient(e, gx[1], gy[0]);
 			if (s[4] == 2)
 				s[4] = orient(e, gx[1], gy[1]);
-			middle ^= nudged(e, s[1]) != nudged(e, s[4]);
+			par[2] ^= nudged(e, s[1]) != nudged(e, s[4]);
 		}
 	}
 	parity[0] = inside;
-	parity[1] = inside ^ bottom;
-	parity[2] = inside ^ left;
-	parity[3] = parity[1] ^ middle;
+	parity[1] = inside ^ par[0];
+	parity[2] = inside ^ par[1];
+	parity[3] = parity[1] ^ par[2];
 }
 
 /* Moves the edges of child q from the level's list to the next level's. */

@@ -218,7 +218,7 @@ qt_ring(const struct ring *ring)
 
 	p = room(96);
 	p += sprintf(p, "ring %ld %s ", ring->id, ring->hole ? "hole" : "outer");
-	p = fmtint(p, (long long)ring->n);
+	p = fmtint(p, (long long)(ring->n + ring->narcs));
 	*p++ = '\n';
 	recorded(p);
 	for (i = 0; i < ring->n; i++) {
@@ -228,6 +228,16 @@ qt_ring(const struct ring *ring)
 		p = fmtreal(p, ring->v[i].x);
 		*p++ = ' ';
 		p = fmtreal(p, ring->v[i].y);
+		*p++ = '\n';
+		recorded(p);
+		if (ring->narcs == 0 || !ring->arc[i])
+			continue;
+		p = room(72);
+		*p++ = 'a';
+		*p++ = ' ';
+		p = fmtreal(p, ring->mid[i].x);
+		*p++ = ' ';
+		p = fmtreal(p, ring->mid[i].y);
 		*p++ = '\n';
 		recorded(p);
 	}

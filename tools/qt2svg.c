@@ -90,8 +90,15 @@ struct window {
 	unsigned char	**rows;		/* CLASSBIT bits a block */
 };
 
+/* An arc of a ring, into the vertex it ends at: SVG's A command. */
+struct ringarc {
+	double		 r;		/* radius, world units; 0: a segment */
+	unsigned char	 large, sweep;
+};
+
 struct ringrec {
 	size_t	first, n;	/* in the vertex array */
+	int	arcs;		/* whether ra has entries for it */
 	int	hole;
 	long	object;		/* of a combined stream, else 0 */
 };
@@ -108,6 +115,8 @@ static struct picture {
 	int		 numbered;	/* a leaf drawn has an element number */
 	struct point	*rv;		/* the rings' vertices */
 	size_t		 nrv, rvcap;
+	struct ringarc	*ra;		/* per vertex: the edge after it */
+	size_t		 racap;
 	struct ringrec	*rings;
 	size_t		 nrings, ringcap;
 	long		 object;	/* the object being read, 0 for none */
@@ -540,6 +549,31 @@ ring(const struct ring *g)
 	r->first = pic.nrv;
 	r->n = g->n;
 	r->hole = g->hole;
+	r->arcs = g->narcs > 0;
+	if (r->arcs) {
+		size_t i;
+
+		pic.ra = grow(pic.ra, &pic.racap, pic.nrv + g->n,
+		    sizeof(*pic.ra));
+		for (i = 0; i < g->n; i++) {
+			struct ringarc *ra = &pic.ra[pic.nrv + i];
+			struct arc c;
+			struct arcmeasures m;
+
+			ra->r = 0;
+			if (!g->arc[i] || arc_init(&c, g->v[i], g->mid[i],
+			    g->v[(i + 1) % g->n]) < 0)
+				continue;
+			arc_measures(&c, &m);
+			ra->r = m.r;
+			/*
+			 * The arc runs counter-clockwise when m lies right of
+			 * the chord, and SVG's sweep 1 is clockwise as seen.
+			 */
+			ra->large = c.oc == c.sd;
+			ra->sweep = c.sd > 0;
+		}
+	}
 	r->object = pic.object;
 	pic.nrv += g->n;
 	pic.nring[pic.object][g->hole != 0]++;
@@ -738,8 +772,10 @@ struct ringpath {
 	int		 open;
 	size_t		 n;		/* vertices in the path element */
 	long long	 lastx, lasty;
+	int		 arc;		/* the last command was an A */
 };
 
+/* move: 1 M, 0 a line, -1 nothing (an arc's start: the path opened). */
 static void
 ringvertex(struct ringpath *rp, long long x, long long y, int move)
 {
@@ -751,28 +787,52 @@ ringvertex(struct ringpath *rp, long long x, long long y, int move)
 	} else if (rp->n >= RINGCHUNK) {
 		outs("\"/>\n<path d=\"");
 		rp->n = 0;
-		if (!move) {
+		if (move <= 0) {
 			out("M", 1);
 			outxy(rp->lastx, rp->lasty);
 			rp->n = 1;
 		}
 	}
-	out(move ? "M" : " ", 1);
-	outxy(x, y);
 	rp->n++;
+	if (move < 0)
+		return;
+	out(move ? "M" : rp->arc ? " L" : " ", move || !rp->arc ? 1 : 2);
+	rp->arc = 0;
+	outxy(x, y);
 	rp->lastx = x;
 	rp->lasty = y;
+}
+
+/* An arc to (x, y), SVG's A command: rx ry rotation large sweep x y. */
+static void
+ringarcto(struct ringpath *rp, const struct ringarc *ra, long long x,
+    long long y)
+{
+	long long r = hund(ra->r * pic.win.scale);
+	char flags[16];
+
+	ringvertex(rp, rp->lastx, rp->lasty, -1);
+	snprintf(flags, sizeof(flags), " 0 %d %d ", ra->large, ra->sweep);
+	out(" A", 2);
+	outxy(r, r);
+	outs(flags);
+	outxy(x, y);
+	rp->lastx = x;
+	rp->lasty = y;
+	rp->arc = 1;
 }
 
 /*
  * A vertex that lands where the last one drawn did is left out, and so is
  * one that lies, with the last drawn and the next, beyond one side of the
- * clip box: the line that replaces its two lies there too.
+ * clip box: the line that replaces its two lies there too.  An arc's end
+ * is always drawn, by an A command.
  */
 static void
 drawring(struct ringpath *rp, const struct ringrec *r)
 {
 	const struct point *v = pic.rv + r->first;
+	const struct ringarc *ra = r->arcs ? pic.ra + r->first : NULL;
 	long long x0 = pixelx(v[0].x), y0 = pixely(v[0].y), x, y, nx, ny;
 	int last, code, ncode;
 	size_t i;
@@ -791,8 +851,12 @@ drawring(struct ringpath *rp, const struct ringrec *r)
 			ny = y0;
 		}
 		ncode = outcode(nx, ny);
-		if ((x != rp->lastx || y != rp->lasty) &&
-		    (last & code & ncode) == 0) {
+		if (ra != NULL && ra[i - 1].r > 0) {
+			ringarcto(rp, &ra[i - 1], x, y);
+			last = code;
+		} else if ((x != rp->lastx || y != rp->lasty) &&
+		    ((last & code & ncode) == 0 ||
+		    (ra != NULL && ra[i].r > 0))) {
 			ringvertex(rp, x, y, 0);
 			last = code;
 		}
@@ -800,7 +864,10 @@ drawring(struct ringpath *rp, const struct ringrec *r)
 		y = ny;
 		code = ncode;
 	}
-	ringvertex(rp, x0, y0, 0);
+	if (ra != NULL && ra[r->n - 1].r > 0)
+		ringarcto(rp, &ra[r->n - 1], x0, y0);
+	else
+		ringvertex(rp, x0, y0, 0);
 }
 
 /* The style of object k's rings: the black one for k = 0, no object. */
@@ -1471,7 +1538,7 @@ main(int argc, char *argv[])
 	if (mapside() < 1)
 		die(2, "-m %d leaves no room in -w %d", opt.margin, opt.width);
 
-	r = qt_openpath(argc == 1 ? argv[0] : "-",
+	r = qt_openpath(argc == 1 ? argv[0] : "-", QT_ARCS |
 	    QT_NEEDUNIVERSE | (verbose ? QT_VERBOSE : 0));
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {

@@ -448,7 +448,7 @@ main(int argc, char *argv[])
 		usage(0);
 
 	t.nodes = cellset_new();
-	r = qt_openpath(argc == 1 ? argv[0] : "-", QT_NEEDUNIVERSE |
+	r = qt_openpath(argc == 1 ? argv[0] : "-", QT_NEEDUNIVERSE | QT_ARCS |
 	    (opt.verbose ? QT_VERBOSE : 0));
 	t.name = qt_name(r);
 	qt_header();

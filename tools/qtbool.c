@@ -430,7 +430,7 @@ main(int argc, char *argv[])
 
 	for (i = 0; i < 2; i++) {
 		fp = openin(argv[i], &in[i].name);
-		in[i].r = qt_open(fp, in[i].name, QT_NEEDUNIVERSE);
+		in[i].r = qt_open(fp, in[i].name, QT_NEEDUNIVERSE | QT_ARCS);
 		readhead(&in[i]);
 	}
 	samehead();

@@ -555,7 +555,7 @@ main(int argc, char *argv[])
 			die(2, "the standard input (-) named twice");
 		fp = openin(argv[i], &in[i].name);
 		in[i].r = qt_open(fp, in[i].name,
-		    QT_NEEDUNIVERSE | (unsealed ? QT_UNSEALED : QT_CONCAT));
+		    QT_NEEDUNIVERSE | QT_ARCS | (unsealed ? QT_UNSEALED : QT_CONCAT));
 		if (!readhead(&in[i]))
 			nextstream(&in[i]);
 	}

@@ -150,7 +150,7 @@ main(int argc, char *argv[])
 		corners = corners_new(0);
 
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
-	    verbose ? QT_VERBOSE : 0);
+	    QT_ARCS | (verbose ? QT_VERBOSE : 0));
 	if (format == QTREE)
 		qt_header();
 	else if (format == GEOJSON)

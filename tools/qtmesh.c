@@ -1052,7 +1052,7 @@ main(int argc, char *argv[])
 	inittemplates();
 
 	fp = openin(argc == 1 ? argv[0] : "-", &inname);
-	r = qt_open(fp, inname, QT_NEEDUNIVERSE | (verbose ? QT_VERBOSE : 0));
+	r = qt_open(fp, inname, QT_NEEDUNIVERSE | QT_ARCS | (verbose ? QT_VERBOSE : 0));
 	head = format == QTREE;
 	if (head)
 		qt_header();

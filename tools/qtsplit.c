@@ -447,7 +447,7 @@ main(int argc, char *argv[])
 		usage(0);
 
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
-	    QT_NEEDUNIVERSE);
+	    QT_NEEDUNIVERSE | QT_ARCS);
 	readrings(r);
 	qt_close(r);
 	checklevels();

@@ -147,6 +147,30 @@ endring(int hole)
 	mo_zero(&poly.ring);
 }
 
+/*
+ * An arc adds its chord's exact terms and its circular segment's, the
+ * latter in floating point: the segment counts positive when the loop
+ * along the arc and back along the chord runs counter-clockwise, which is
+ * when m lies right of a->b.
+ */
+static void
+arcedge(struct point a, struct point m, struct point b)
+{
+	struct arc c;
+	struct arcmeasures g;
+	double s;
+
+	if (arc_init(&c, a, m, b) < 0)
+		die(1, "arc through three points on a line");	/* read.c */
+	arc_measures(&c, &g);
+	s = -c.sd * g.area;
+	mo_edge(&poly.ring, a, b);
+	xs_add(&poly.ring.a2, 2 * s);
+	xs_add(&poly.ring.mx, 6 * s * g.gx);
+	xs_add(&poly.ring.my, 6 * s * g.gy);
+	addperim(g.len);
+}
+
 static void
 ring(const struct ring *g)
 {
@@ -155,7 +179,10 @@ ring(const struct ring *g)
 	poly.nrings++;
 	poly.nholes += g->hole;
 	for (i = 0; i < g->n; i++)
-		edge(g->v[i], g->v[(i + 1) % g->n]);
+		if (g->narcs > 0 && g->arc[i])
+			arcedge(g->v[i], g->mid[i], g->v[(i + 1) % g->n]);
+		else
+			edge(g->v[i], g->v[(i + 1) % g->n]);
 	endring(g->hole);
 }
 
@@ -934,7 +961,7 @@ main(int argc, char *argv[])
 	mo_init(&poly.region);
 	mo_init(&poly.ring);
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
-	    verbose ? QT_VERBOSE : 0);
+	    QT_ARCS | (verbose ? QT_VERBOSE : 0));
 	readstream(r);
 	qt_close(r);
 	report(table);

@@ -158,6 +158,7 @@ writestream(const struct input *in, const struct universe *u, int level)
 		out.hole = r->depth % 2;
 		out.n = r->n;
 		out.v = r->v;
+		out.narcs = 0;
 		qt_ring(&out);
 	}
 	qt_end();

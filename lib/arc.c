@@ -1,0 +1,694 @@
+/*
+ * Circular arcs, decided exactly.  An arc runs from A through M to B, three
+ * doubles not on one line.  With b = B - A, m = M - A (differences of
+ * doubles) and
+ *
+ *	D = bx my - by mx,  Ux = my |b|^2 - by |m|^2,  Uy = bx |m|^2 - mx |b|^2,
+ *
+ * its circle has the centre C = A + U / 2D and the squared radius |U|^2 /
+ * 4D^2, rational in the inputs.  Every question below is the sign of a
+ * polynomial in such differences, of degree 6 at most.  Each is evaluated
+ * first in interval arithmetic (each result widened outward by more than
+ * its rounding error, so no rounding mode is changed and underflow and
+ * overflow only widen it), and when the interval holds 0, exactly, in
+ * integers: a coordinate within QT_COORD_MIN..QT_COORD_MAX is an integer
+ * times 2^-BIGSHIFT, and the products of six such integers fit BIGN limbs.
+ *
+ * The arc is the part of its circle on M's side of the chord line AB, with
+ * A and B.  So a point p lies inside the circular segment (the region
+ * between chord and arc) when it lies strictly inside the circle and
+ * strictly on M's side of the chord: the sign f(p) of |p - C|^2 - r^2 and
+ * orient2d(A, B, p).
+ */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "qtree.h"
+
+/* Integers of at most BIGN 32-bit limbs, sign and magnitude. */
+#define BIGSHIFT	400
+#define BIGN		150
+
+struct big {
+	int		 neg, n;	/* n limbs, the top one nonzero */
+	uint32_t	 d[BIGN];
+};
+
+static void
+big_fromdouble(struct big *z, double v)
+{
+	int e, s, w, b;
+	uint64_t m;
+
+	z->neg = v < 0;
+	z->n = 0;
+	if (v == 0)
+		return;
+	m = (uint64_t)ldexp(frexp(fabs(v), &e), 53);
+	s = e - 53 + BIGSHIFT;	/* v = m 2^(e-53); >= 0 for coordinates */
+	if (s < 0)
+		die(1, "exact arithmetic: %g is out of range", v);
+	w = s / 32, b = s % 32;
+	memset(z->d, 0, (w + 3) * sizeof(z->d[0]));
+	z->d[w] = (uint32_t)(m << b);
+	z->d[w + 1] = (uint32_t)((m << b) >> 32);
+	z->d[w + 2] = b > 0 ? (uint32_t)(m >> (64 - b)) : 0;
+	z->n = w + 3;
+	while (z->n > 0 && z->d[z->n - 1] == 0)
+		z->n--;
+}
+
+static int
+mag_cmp(const struct big *a, const struct big *b)
+{
+	int i;
+
+	if (a->n != b->n)
+		return a->n < b->n ? -1 : 1;
+	for (i = a->n - 1; i >= 0; i--)
+		if (a->d[i] != b->d[i])
+			return a->d[i] < b->d[i] ? -1 : 1;
+	return 0;
+}
+
+/* |z| = |a| + |b| */
+static void
+mag_add(struct big *z, const struct big *a, const struct big *b)
+{
+	uint64_t c = 0;
+	int i, n = a->n > b->n ? a->n : b->n;
+
+	for (i = 0; i < n; i++) {
+		c += (uint64_t)(i < a->n ? a->d[i] : 0) +
+		    (i < b->n ? b->d[i] : 0);
+		z->d[i] = (uint32_t)c;
+		c >>= 32;
+	}
+	if (c)
+		z->d[n++] = (uint32_t)c;
+	z->n = n;
+}
+
+/* |z| = |a| - |b|, |a| >= |b| */
+static void
+mag_sub(struct big *z, const struct big *a, const struct big *b)
+{
+	int64_t c = 0;
+	int i;
+
+	for (i = 0; i < a->n; i++) {
+		c += (int64_t)a->d[i] - (i < b->n ? b->d[i] : 0);
+		z->d[i] = (uint32_t)c;
+		c = c < 0 ? -1 : 0;
+	}
+	z->n = a->n;
+	while (z->n > 0 && z->d[z->n - 1] == 0)
+		z->n--;
+}
+
+/* z = a + s b, s = 1 or -1; z may be a or b. */
+static void
+big_addsub(struct big *z, const struct big *a, const struct big *b, int s)
+{
+	int bneg = s < 0 ? !b->neg : b->neg;
+
+	if (a->neg == bneg) {
+		mag_add(z, a, b);
+		z->neg = bneg;
+	} else if (mag_cmp(a, b) >= 0) {
+		int neg = a->neg;
+
+		mag_sub(z, a, b);
+		z->neg = neg;
+	} else {
+		mag_sub(z, b, a);
+		z->neg = bneg;
+	}
+	if (z->n == 0)
+		z->neg = 0;
+}
+
+static void
+big_mul(struct big *z, const struct big *a, const struct big *b)
+{
+	uint32_t t[BIGN];
+	int i, j, n = a->n + b->n;
+
+	if (a->n == 0 || b->n == 0) {
+		z->n = z->neg = 0;
+		return;
+	}
+	if (n > BIGN) {		/* not for coordinates in range */
+		die(1, "exact arithmetic: %d limbs", n);
+		return;
+	}
+	memset(t, 0, n * sizeof(t[0]));
+	for (i = 0; i < a->n; i++) {
+		uint64_t c = 0;
+
+		for (j = 0; j < b->n; j++) {
+			c += (uint64_t)a->d[i] * b->d[j] + t[i + j];
+			t[i + j] = (uint32_t)c;
+			c >>= 32;
+		}
+		t[i + b->n] = (uint32_t)c;
+	}
+	memcpy(z->d, t, n * sizeof(t[0]));
+	z->n = n;
+	while (z->n > 0 && z->d[z->n - 1] == 0)
+		z->n--;
+	z->neg = a->neg != b->neg;
+}
+
+static int
+big_sign(const struct big *a)
+{
+	return a->n == 0 ? 0 : a->neg ? -1 : 1;
+}
+
+static void
+big_diff(struct big *z, double a, double b)
+{
+	struct big t;
+
+	big_fromdouble(z, a);
+	big_fromdouble(&t, b);
+	big_addsub(z, z, &t, -1);
+}
+
+/*
+ * Intervals.  Each operation's result is widened by 2^-50 of its
+ * magnitude and 2^-1060: more than the rounding of the operation and of
+ * the widening itself, in the subnormal range too.  An overflow gives an
+ * infinite bound, a 0 times infinity NaN: both leave the sign undecided.
+ */
+
+static inline struct interval
+widen(double lo, double hi)
+{
+	struct interval r;
+
+	r.lo = lo - (fabs(lo) * 0x1p-50 + 0x1p-1060);
+	r.hi = hi + (fabs(hi) * 0x1p-50 + 0x1p-1060);
+	return r;
+}
+
+static inline struct interval
+iv_diff(double a, double b)
+{
+	double d = a - b;
+
+	return widen(d, d);
+}
+
+static inline struct interval
+iv_add(struct interval a, struct interval b)
+{
+	return widen(a.lo + b.lo, a.hi + b.hi);
+}
+
+static inline struct interval
+iv_sub(struct interval a, struct interval b)
+{
+	return widen(a.lo - b.hi, a.hi - b.lo);
+}
+
+static inline struct interval
+iv_mul(struct interval a, struct interval b)
+{
+	double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo,
+	    p4 = a.hi * b.hi;
+
+	if (p1 != p1 || p2 != p2 || p3 != p3 || p4 != p4)	/* NaN */
+		return widen(-INFINITY, INFINITY);
+	return widen(fmin(fmin(p1, p2), fmin(p3, p4)),
+	    fmax(fmax(p1, p2), fmax(p3, p4)));
+}
+
+static inline struct interval
+iv_scale(struct interval a, double s)	/* s a power of two, positive */
+{
+	struct interval r = { a.lo * s, a.hi * s };
+
+	return widen(r.lo, r.hi);
+}
+
+/* a / b, b not holding 0 */
+static inline struct interval
+iv_div(struct interval a, struct interval b)
+{
+	double p1 = a.lo / b.lo, p2 = a.lo / b.hi, p3 = a.hi / b.lo,
+	    p4 = a.hi / b.hi;
+
+	if (!(b.lo > 0 || b.hi < 0) || p1 != p1 || p2 != p2 || p3 != p3 ||
+	    p4 != p4)
+		return widen(-INFINITY, INFINITY);
+	return widen(fmin(fmin(p1, p2), fmin(p3, p4)),
+	    fmax(fmax(p1, p2), fmax(p3, p4)));
+}
+
+/* 1, -1, or 0 when the interval cannot tell. */
+static inline int
+iv_sign(struct interval a)
+{
+	return a.lo > 0 ? 1 : a.hi < 0 ? -1 : 0;
+}
+
+/* The arc's quantities in integers, for the exact fallback. */
+struct bigarc {
+	struct big	 bx, by, mx, my, d, ux, uy;
+};
+
+static void
+bigarc(const struct arc *a, struct bigarc *z)
+{
+	struct big b2, m2, t;
+
+	big_diff(&z->bx, a->b.x, a->a.x);
+	big_diff(&z->by, a->b.y, a->a.y);
+	big_diff(&z->mx, a->m.x, a->a.x);
+	big_diff(&z->my, a->m.y, a->a.y);
+	big_mul(&z->d, &z->bx, &z->my);
+	big_mul(&t, &z->by, &z->mx);
+	big_addsub(&z->d, &z->d, &t, -1);
+	big_mul(&b2, &z->bx, &z->bx);
+	big_mul(&t, &z->by, &z->by);
+	big_addsub(&b2, &b2, &t, 1);
+	big_mul(&m2, &z->mx, &z->mx);
+	big_mul(&t, &z->my, &z->my);
+	big_addsub(&m2, &m2, &t, 1);
+	big_mul(&z->ux, &z->my, &b2);
+	big_mul(&t, &z->by, &m2);
+	big_addsub(&z->ux, &z->ux, &t, -1);
+	big_mul(&z->uy, &z->bx, &m2);
+	big_mul(&t, &z->mx, &b2);
+	big_addsub(&z->uy, &z->uy, &t, -1);
+}
+
+/*
+ * The floating filter of arc_power: an enclosure of C, (cx, cy) +- ec in
+ * each coordinate, and bounds tin < r^2 < tout (tin < 0 when none), so
+ * that a point whose distance from (cx, cy) clears r by more than the
+ * enclosure and the rounding lies surely inside or outside.
+ */
+static void
+filter(struct arc *a)
+{
+	struct interval two = { 2, 2 }, d2 = iv_mul(two, a->id), cx, cy, r2;
+	double ex, ey, rlo, rhi;
+
+	cx = iv_add(widen(a->a.x, a->a.x), iv_div(a->iux, d2));
+	cy = iv_add(widen(a->a.y, a->a.y), iv_div(a->iuy, d2));
+	r2 = iv_div(iv_add(iv_mul(a->iux, a->iux), iv_mul(a->iuy, a->iuy)),
+	    iv_mul(d2, d2));
+	a->cx = 0.5 * cx.lo + 0.5 * cx.hi;
+	a->cy = 0.5 * cy.lo + 0.5 * cy.hi;
+	ex = fmax(a->cx - cx.lo, cx.hi - a->cx);
+	ey = fmax(a->cy - cy.lo, cy.hi - a->cy);
+	a->ec = fmax(ex, ey) * (1 + 0x1p-40) + 0x1p-1060;
+	a->tin = -1;
+	a->tout = INFINITY;
+	if (!(a->ec < INFINITY) || !(r2.hi < INFINITY) || !(r2.lo >= 0))
+		return;
+	rlo = sqrt(r2.lo) * (1 - 0x1p-40) - 1.5 * a->ec;
+	rhi = sqrt(r2.hi) * (1 + 0x1p-40) + 1.5 * a->ec;
+	a->tout = rhi * rhi * (1 + 0x1p-40);
+	if (rlo > 0)
+		a->tin = rlo * rlo * (1 - 0x1p-40);
+}
+
+int
+arc_init(struct arc *a, struct point pa, struct point pm, struct point pb)
+{
+	struct interval b2, m2;
+	double r;
+	int k;
+
+	memset(a, 0, sizeof(*a));
+	a->a = pa, a->m = pm, a->b = pb;
+	a->sd = orient2d(pa.x, pa.y, pb.x, pb.y, pm.x, pm.y);
+	if (a->sd == 0)
+		return -1;
+	a->ibx = iv_diff(pb.x, pa.x);
+	a->iby = iv_diff(pb.y, pa.y);
+	a->imx = iv_diff(pm.x, pa.x);
+	a->imy = iv_diff(pm.y, pa.y);
+	a->id = iv_sub(iv_mul(a->ibx, a->imy), iv_mul(a->iby, a->imx));
+	b2 = iv_add(iv_mul(a->ibx, a->ibx), iv_mul(a->iby, a->iby));
+	m2 = iv_add(iv_mul(a->imx, a->imx), iv_mul(a->imy, a->imy));
+	a->iux = iv_sub(iv_mul(a->imy, b2), iv_mul(a->iby, m2));
+	a->iuy = iv_sub(iv_mul(a->ibx, m2), iv_mul(a->imx, b2));
+	a->oc = arc_centreside(a);
+	filter(a);
+	/*
+	 * The box: A, B and those of the circle's extreme points C +- (r, 0),
+	 * C +- (0, r) that the arc may hold, from the enclosures of C and r:
+	 * an extreme point is left out when it lies surely on the far side of
+	 * the chord line.
+	 */
+	a->xmin = fmin(pa.x, pb.x), a->xmax = fmax(pa.x, pb.x);
+	a->ymin = fmin(pa.y, pb.y), a->ymax = fmax(pa.y, pb.y);
+	if (!(a->tout < INFINITY) || !(a->ec < INFINITY)) {
+		a->xmin = a->ymin = -INFINITY;
+		a->xmax = a->ymax = INFINITY;
+		return 0;
+	}
+	r = sqrt(a->tout) * (1 + 0x1p-40) + a->ec;
+	for (k = 0; k < 4; k++) {
+		struct interval ex, ey, o;
+		double dx = k == 0 ? r : k == 1 ? -r : 0;
+		double dy = k == 2 ? r : k == 3 ? -r : 0;
+
+		ex = widen(a->cx + dx - a->ec, a->cx + dx + a->ec);
+		ey = widen(a->cy + dy - a->ec, a->cy + dy + a->ec);
+		o = iv_sub(iv_mul(a->ibx, iv_sub(ey, widen(pa.y, pa.y))),
+		    iv_mul(a->iby, iv_sub(ex, widen(pa.x, pa.x))));
+		if (iv_sign(o) == -a->sd)
+			continue;
+		a->xmin = fmin(a->xmin, ex.lo), a->xmax = fmax(a->xmax, ex.hi);
+		a->ymin = fmin(a->ymin, ey.lo), a->ymax = fmax(a->ymax, ey.hi);
+	}
+	return 0;
+}
+
+/* The sign of f at (x, y): -1 inside the circle, 0 on it, 1 outside. */
+int
+arc_power(const struct arc *a, double x, double y)
+{
+	struct interval px, py, v;
+	struct bigarc z;
+	struct big bx, by, t, u;
+	double dx = x - a->cx, dy = y - a->cy, g = dx * dx + dy * dy;
+	int s;
+
+	/* (cx, cy) is within ec * sqrt(2) of C; tin and tout allow for it */
+	if (g * (1 - 0x1p-40) > a->tout + 0x1p-1000)
+		return 1;
+	if (g * (1 + 0x1p-40) + 0x1p-1000 < a->tin)
+		return -1;
+	px = iv_diff(x, a->a.x), py = iv_diff(y, a->a.y);
+	v = iv_sub(iv_mul(a->id, iv_add(iv_mul(px, px), iv_mul(py, py))),
+	    iv_add(iv_mul(px, a->iux), iv_mul(py, a->iuy)));
+	if ((s = iv_sign(v)) != 0)
+		return s * a->sd;
+	bigarc(a, &z);
+	big_diff(&bx, x, a->a.x);
+	big_diff(&by, y, a->a.y);
+	big_mul(&t, &bx, &bx);
+	big_mul(&u, &by, &by);
+	big_addsub(&t, &t, &u, 1);
+	big_mul(&t, &t, &z.d);
+	big_mul(&u, &bx, &z.ux);
+	big_addsub(&t, &t, &u, -1);
+	big_mul(&u, &by, &z.uy);
+	big_addsub(&t, &t, &u, -1);
+	return big_sign(&t) * a->sd;
+}
+
+/*
+ * The sign of v - C's coordinate on axis (0 x, 1 y): 2 D (v - A) - U,
+ * times the sign of D.
+ */
+int
+arc_cmpcentre(const struct arc *a, int axis, double v)
+{
+	struct interval p = axis ? iv_diff(v, a->a.y) : iv_diff(v, a->a.x);
+	struct interval w = iv_sub(iv_scale(iv_mul(a->id, p), 2),
+	    axis ? a->iuy : a->iux);
+	struct bigarc z;
+	struct big b, t;
+	int s;
+
+	if ((s = iv_sign(w)) != 0)
+		return s * a->sd;
+	bigarc(a, &z);
+	big_diff(&b, v, axis ? a->a.y : a->a.x);
+	big_mul(&t, &z.d, &b);
+	big_addsub(&t, &t, &t, 1);
+	big_addsub(&t, &t, axis ? &z.uy : &z.ux, -1);
+	return big_sign(&t) * a->sd;
+}
+
+/*
+ * The sign of 1 + 2 (y - Cy), the second-order term of f along the nudge
+ * (d, d^2): D (1 + 2 (y - Ay)) - Uy, times the sign of D.
+ */
+static int
+nudge2(const struct arc *a, double y)
+{
+	struct interval p = iv_diff(y, a->a.y), one = { 1, 1 };
+	struct interval w = iv_sub(iv_mul(a->id, iv_add(one, iv_scale(p, 2))),
+	    a->iuy);
+	struct bigarc z;
+	struct big b, t;
+	int s;
+
+	if ((s = iv_sign(w)) != 0)
+		return s * a->sd;
+	bigarc(a, &z);
+	big_diff(&b, y, a->a.y);
+	big_addsub(&b, &b, &b, 1);
+	big_fromdouble(&t, 1);
+	big_addsub(&b, &b, &t, 1);
+	big_mul(&t, &z.d, &b);
+	big_addsub(&t, &t, &z.uy, -1);
+	return big_sign(&t) * a->sd;
+}
+
+/*
+ * The sign of f on the centre's line: at (v, Cy) for axis 0, (Cx, v) for
+ * axis 1.  For axis 0, 4 D^2 (v - Ax)^2 - 4 D (v - Ax) Ux - Uy^2.
+ */
+int
+arc_powerline(const struct arc *a, int axis, double v)
+{
+	struct interval p = axis ? iv_diff(v, a->a.y) : iv_diff(v, a->a.x);
+	struct interval u = axis ? a->iuy : a->iux, o = axis ? a->iux : a->iuy;
+	struct interval dp = iv_scale(iv_mul(a->id, p), 2);
+	struct interval w = iv_sub(iv_mul(dp, iv_sub(dp, iv_scale(u, 2))),
+	    iv_mul(o, o));
+	struct bigarc z;
+	struct big b, t, s2;
+	int s;
+
+	if ((s = iv_sign(w)) != 0)
+		return s;
+	bigarc(a, &z);
+	big_diff(&b, v, axis ? a->a.y : a->a.x);
+	big_mul(&t, &z.d, &b);
+	big_addsub(&t, &t, &t, 1);		/* 2 D p */
+	big_addsub(&s2, &t, axis ? &z.uy : &z.ux, -1);
+	big_addsub(&s2, &s2, axis ? &z.uy : &z.ux, -1);	/* 2 D p - 2 U */
+	big_mul(&t, &t, &s2);
+	big_mul(&s2, axis ? &z.ux : &z.uy, axis ? &z.ux : &z.uy);
+	big_addsub(&t, &t, &s2, -1);
+	return big_sign(&t);
+}
+
+/*
+ * orient2d(A, B, z) for z on the centre's line: (v, Cy) for axis 0,
+ * (Cx, v) for axis 1; z = C for axis 2.  Times 2 D: bx Uy - 2 D by (v -
+ * Ax), 2 D bx (v - Ay) - by Ux, bx Uy - by Ux.
+ */
+int
+arc_orientline(const struct arc *a, int axis, double v)
+{
+	struct interval w;
+	struct bigarc z;
+	struct big b, t, u;
+	int s;
+
+	if (axis == 0)
+		w = iv_sub(iv_mul(a->ibx, a->iuy), iv_scale(iv_mul(a->id,
+		    iv_mul(a->iby, iv_diff(v, a->a.x))), 2));
+	else if (axis == 1)
+		w = iv_sub(iv_scale(iv_mul(a->id, iv_mul(a->ibx, iv_diff(v,
+		    a->a.y))), 2), iv_mul(a->iby, a->iux));
+	else
+		w = iv_sub(iv_mul(a->ibx, a->iuy), iv_mul(a->iby, a->iux));
+	if ((s = iv_sign(w)) != 0)
+		return s * a->sd;
+	bigarc(a, &z);
+	if (axis == 0) {
+		big_mul(&t, &z.bx, &z.uy);
+		big_diff(&b, v, a->a.x);
+		big_mul(&u, &z.by, &b);
+		big_mul(&u, &u, &z.d);
+		big_addsub(&t, &t, &u, -1);
+		big_addsub(&t, &t, &u, -1);
+	} else if (axis == 1) {
+		big_diff(&b, v, a->a.y);
+		big_mul(&t, &z.bx, &b);
+		big_mul(&t, &t, &z.d);
+		big_addsub(&t, &t, &t, 1);
+		big_mul(&u, &z.by, &z.ux);
+		big_addsub(&t, &t, &u, -1);
+	} else {
+		big_mul(&t, &z.bx, &z.uy);
+		big_mul(&u, &z.by, &z.ux);
+		big_addsub(&t, &t, &u, -1);
+	}
+	return big_sign(&t) * a->sd;
+}
+
+int
+arc_centreside(const struct arc *a)
+{
+	return arc_orientline(a, 2, 0);
+}
+
+/*
+ * Whether the point (x, y) + (d, d^2), d > 0 infinitesimal, lies inside
+ * the arc's circular segment, given o = orient2d(A, B, (x, y)) and f =
+ * arc_power(a, x, y).  Along the nudge f grows by 2 (x - Cx) d + (1 + 2
+ * (y - Cy)) d^2 + d^4, and the orientation as lib/split.c's nudged says.
+ */
+int
+arc_insegment(const struct arc *a, double x, double y, int o, int f)
+{
+	if (o == 0)
+		o = a->b.y != a->a.y ? (a->b.y > a->a.y ? -1 : 1) :
+		    (a->b.x > a->a.x ? 1 : -1);
+	if (o != a->sd)
+		return 0;
+	if (f == 0 && (f = arc_cmpcentre(a, 0, x)) == 0 &&
+	    (f = nudge2(a, y)) == 0)
+		f = 1;
+	return f < 0;
+}
+
+/*
+ * Whether the arc meets the open box (x0, x1) x (y0, y1), whose corners
+ * (x0, y0), (x1, y0), (x0, y1), (x1, y1) have orientations o[] against
+ * the chord A->B and powers f[].  S is the open circular segment, H the
+ * open half-plane of M's side, K the closed box and Q the open one.
+ *
+ * With A, B and M outside Q: if the chord meets Q, at a point z strictly
+ * between A and B, the chord line's part in K lies within [A, B], where f
+ * <= 0, so the arc meets Q exactly when f > 0 somewhere on Q's part in H,
+ * at a corner of M's side.  Otherwise Q meets the arc exactly when it
+ * meets both S and the outside of S's closure (Q is connected and the
+ * chord takes no part of Q): Q leaves cl S when a corner does (cl S is
+ * convex); Q meets S when a corner lies in S, or else when Q meets the
+ * open disc, at the point z of K nearest the centre, on M's side: the
+ * disc's part in Q misses the open chord, so lies on one side of the
+ * chord line, z's, or when z lies on that line (a supporting line of K
+ * then), the side of the corners.
+ */
+int
+arc_meets(const struct arc *a, double x0, double y0, double x1, double y1,
+    const signed char o[4], const signed char f[4])
+{
+	int c, pos = 0, neg = 0, out = 0, in = 0, cx, cy, fz, oz;
+	double zx = 0, zy = 0;
+
+#define INBOX(p)	((p).x > x0 && (p).x < x1 && (p).y > y0 && (p).y < y1)
+	if (INBOX(a->a) || INBOX(a->b) || INBOX(a->m))
+		return 1;
+#undef INBOX
+	for (c = 0; c < 4; c++) {
+		pos |= o[c] > 0;
+		neg |= o[c] < 0;
+	}
+	if (!(a->sd > 0 ? pos : neg))
+		return 0;	/* Q lies beyond the chord line from the arc */
+	if (pos && neg && fmin(a->a.x, a->b.x) < x1 &&
+	    fmax(a->a.x, a->b.x) > x0 && fmin(a->a.y, a->b.y) < y1 &&
+	    fmax(a->a.y, a->b.y) > y0) {
+		for (c = 0; c < 4; c++)
+			if (o[c] == a->sd && f[c] > 0)
+				return 1;
+		return 0;
+	}
+	for (c = 0; c < 4; c++) {
+		out |= f[c] > 0 || o[c] == -a->sd;
+		in |= f[c] < 0 && o[c] == a->sd;
+	}
+	if (!out)
+		return 0;
+	if (in)
+		return 1;
+	{	/* the disc surely misses K: the filter of arc_power */
+		double dx = fmax(fmax(x0 - a->cx, a->cx - x1), 0);
+		double dy = fmax(fmax(y0 - a->cy, a->cy - y1), 0);
+
+		dx = fmax(dx - a->ec, 0), dy = fmax(dy - a->ec, 0);
+		if ((dx * dx + dy * dy) * (1 - 0x1p-40) > a->tout + 0x1p-1000)
+			return 0;
+	}
+	/* z: the centre clamped to K, by coordinates */
+	cx = arc_cmpcentre(a, 0, x0) >= 0 ? -1 : arc_cmpcentre(a, 0, x1) <= 0 ?
+	    1 : 0;
+	cy = arc_cmpcentre(a, 1, y0) >= 0 ? -1 : arc_cmpcentre(a, 1, y1) <= 0 ?
+	    1 : 0;
+	if (cx != 0)
+		zx = cx < 0 ? x0 : x1;
+	if (cy != 0)
+		zy = cy < 0 ? y0 : y1;
+	if (cx != 0 && cy != 0) {
+		c = (cx > 0) + 2 * (cy > 0);
+		fz = f[c];
+		oz = o[c];
+	} else if (cx != 0) {
+		fz = arc_powerline(a, 0, zx);
+		oz = arc_orientline(a, 0, zx);
+	} else if (cy != 0) {
+		fz = arc_powerline(a, 1, zy);
+		oz = arc_orientline(a, 1, zy);
+	} else {
+		fz = -1;
+		oz = a->oc;
+	}
+	if (fz >= 0)
+		return 0;
+	if (oz == 0)
+		oz = pos ? 1 : -1;	/* K on one side of the line */
+	return oz == a->sd;
+}
+
+/*
+ * The arc's measures in floating point, from the formulas of a circle's
+ * segment and the centre's enclosure (half its chord c and the centre's
+ * distance h from the chord give alpha = atan2(c, h), well conditioned
+ * where asin(c / r) is not): its radius r, its central angle theta = 2 alpha (more than pi
+ * when C lies on M's side), its length r theta, the area r^2 (theta - sin
+ * theta) / 2 of its circular segment and that segment's centroid, which
+ * lies on the chord's perpendicular bisector, 4 r sin^3 alpha / 3 (theta -
+ * sin theta) from C toward the arc.  Small angles take the series of theta
+ * - sin theta and the parabola's 2/5 of the sagitta, where the closed forms
+ * lose their digits.
+ */
+void
+arc_measures(const struct arc *a, struct arcmeasures *g)
+{
+	double bx = a->b.x - a->a.x, by = a->b.y - a->a.y;
+	double lb = hypot(bx, by), c = lb / 2, h, r, s, al, th, tms, t;
+	double nx = -by / lb * a->sd, ny = bx / lb * a->sd;
+
+	/* h: C's distance from the chord, positive away from the arc */
+	h = -((a->cx - (a->a.x + bx / 2)) * nx + (a->cy - (a->a.y + by / 2)) *
+	    ny);
+	al = atan2(c, h);
+	r = hypot(c, h);
+	s = sin(al);
+	th = 2 * al;
+	if (th < 1e-2) {
+		double t2 = th * th;
+
+		tms = th * t2 / 6 * (1 - t2 / 20 * (1 - t2 / 42 * (1 - t2 /
+		    72)));
+	} else
+		tms = th - sin(th);
+	g->r = r;
+	g->theta = th;
+	g->len = r * th;
+	g->area = r * r * tms / 2;
+	/* the centroid's height above the chord, toward the arc */
+	if (th < 1e-2)
+		t = 0.4 * 2 * r * sin(al / 2) * sin(al / 2);
+	else
+		t = 4 * r * s * s * s / (3 * tms) - r * cos(al);
+	g->gx = a->a.x + bx / 2 + t * nx;
+	g->gy = a->a.y + by / 2 + t * ny;
+}
