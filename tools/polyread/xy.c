@@ -81,6 +81,7 @@ xynumber(struct src *s, const char *q, const char **end)
 		badtoken(s, "number out of range");
 	if (rc < 0 || !(isspace((unsigned char)**end) || **end == '\0'))
 		badtoken(s, "not a number");
+	endnumber(s, *end);
 	return v;
 }
 
