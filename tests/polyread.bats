@@ -775,7 +775,7 @@ nonl="the input ends in a number, without a newline: if it was cut, the number m
 	[ -z "$output" ]
 }
 
-@test "xy: no warning when the last line ends in a blank or a comment" {
+@test "xy: no warning when the last line ends in a blank or is a comment" {
 	printf '0 0\n4 0\n4 4\n0 4 ' > in
 	run -0 --separate-stderr polyread in
 	[ -z "$stderr" ]
