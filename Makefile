@@ -78,7 +78,10 @@ tools/genpow5: tools/genpow5.c
 tests/rangecheck: tests/rangecheck.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/rangecheck.c lib/libqtree.a $(LDLIBS)
 
-test: all tests/fmtcheck tests/numcheck tools/genpow5 tests/rangecheck
+# What the suite runs beyond the programs; tests/mutate.sh builds it too.
+testprogs: all tests/fmtcheck tests/numcheck tools/genpow5 tests/rangecheck
+
+test: testprogs
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	bats tests
 
@@ -155,5 +158,5 @@ clean:
 	    tests/fuzz/qt2svg tests/fuzz/qtbool
 	rm -f $(POLYREADOBJ)
 
-.PHONY: all test demo regress mutate bench bench-peers sanitize fuzz install \
+.PHONY: all testprogs test demo regress mutate bench bench-peers sanitize fuzz install \
 	uninstall clean
