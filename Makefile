@@ -133,7 +133,8 @@ bench: all tests/numbench
 bench-peers: all
 	sh tools/benchpeers.sh
 
-# Each parser under AFL++ for FUZZTIME seconds (default 60).
+# Each parser under AFL++ for FUZZTIME seconds (default 60), or FUZZEXECS
+# executions; FUZZMODE=fast for the persistent build (tests/fuzz/run.sh).
 fuzz:
 	sh tests/fuzz/run.sh
 
@@ -155,7 +156,7 @@ clean:
 	    tests/rangecheck \
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
-	    tests/fuzz/qt2svg tests/fuzz/qtbool
+	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o
 	rm -f $(POLYREADOBJ)
 
 .PHONY: all testprogs test demo regress mutate bench bench-peers sanitize fuzz install \
