@@ -12,9 +12,12 @@
 # FUZZMODE=fast builds each program persistent instead (persist.c runs its
 # main once an input in one process, persist.h renames what it needs), with
 # the undefined-behaviour sanitizer trapping and without the address
-# sanitizer: about 2,000 executions a second where a fork server with both
-# sanitizers makes 70 to 500 (a fork costs a millisecond here), so that 10^6
-# executions a target take minutes, not hours.  It misses what only the
+# sanitizer.  On this project's 2-core virtual machine (2026-12-01) a fork
+# costs a millisecond: the fork server made 72 executions a second with
+# both sanitizers and 350 with neither on polyread -f xy, the persistent
+# build 2,300 (brep, the machine lightly loaded) down to 300 (qtleaves -n,
+# loaded 4 times over), so 10^6 executions a target take minutes to an
+# hour, not a day.  It misses what only the
 # address sanitizer sees: try its crashes and a sample of its corpus again
 # in the default mode.  FUZZTARGETS names the targets to run (default all,
 # as in the loop below).  FUZZCPU=N binds afl-fuzz and the program to CPU N
