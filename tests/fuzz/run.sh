@@ -17,10 +17,10 @@
 # both sanitizers and 350 with neither on polyread -f xy, the persistent
 # build 2,300 (brep, the machine lightly loaded) down to 300 (qtleaves -n,
 # loaded 4 times over), so 10^6 executions a target take minutes to an
-# hour, not a day.  It misses what only the
-# address sanitizer sees: try its crashes and a sample of its corpus again
-# in the default mode.  FUZZTARGETS names the targets to run (default all,
-# as in the loop below).  FUZZCPU=N binds afl-fuzz and the program to CPU N
+# hour, not a day.  It misses what only the address sanitizer sees: try
+# its crashes and a sample of its corpus again in the default mode.
+# FUZZTARGETS names the targets to run (default all, as in the loop
+# below).  FUZZCPU=N binds afl-fuzz and the program to CPU N
 # (afl-fuzz -b): persistent, the two hand every input back and forth, and
 # on one CPU of a virtual machine they do so about twice as fast.
 set -eu
