@@ -78,7 +78,10 @@ tools/genpow5: tools/genpow5.c
 tests/rangecheck: tests/rangecheck.c tests/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/rangecheck.c lib/libqtree.a $(LDLIBS)
 
-test: all tests/fmtcheck tests/numcheck tools/genpow5 tests/rangecheck
+# What the suite runs beyond the programs; tests/mutate.sh builds it too.
+testprogs: all tests/fmtcheck tests/numcheck tools/genpow5 tests/rangecheck
+
+test: testprogs
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	bats tests
 
@@ -130,7 +133,8 @@ bench: all tests/numbench
 bench-peers: all
 	sh tools/benchpeers.sh
 
-# Each parser under AFL++ for FUZZTIME seconds (default 60).
+# Each parser under AFL++ for FUZZTIME seconds (default 60), or FUZZEXECS
+# executions; FUZZMODE=fast for the persistent build (tests/fuzz/run.sh).
 fuzz:
 	sh tests/fuzz/run.sh
 
@@ -152,8 +156,8 @@ clean:
 	    tests/rangecheck \
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
-	    tests/fuzz/qt2svg tests/fuzz/qtbool
+	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o
 	rm -f $(POLYREADOBJ)
 
-.PHONY: all test demo regress mutate bench bench-peers sanitize fuzz install \
+.PHONY: all testprogs test demo regress mutate bench bench-peers sanitize fuzz install \
 	uninstall clean

@@ -118,7 +118,7 @@ awk -v dir="$tmp/m" '
 suite=$(cd tests && ls *.bats | sed 's/\.bats$//')
 
 build() {
-	(cd "$tree" && nice -n 10 make -s all tests/fmtcheck) \
+	(cd "$tree" && nice -n 10 make -s testprogs) \
 	    > "$tmp/build.log" 2>&1
 }
 

@@ -744,3 +744,102 @@ ring 3 hole 3" ]
 	[[ "${stderr_lines[2]}" =~ ^polyread:\ nesting\ and\ connectivity\ checked,\ [0-9]+\ s$ ]]
 	[[ "${stderr_lines[3]}" =~ ^polyread:\ 2\ rings\ written,\ [0-9]+\ s$ ]]
 }
+
+# A last line without its newline (issue 15): read, as awk and sort read
+# it, but an input that ends in a number says that the number may be cut.
+nonl="the input ends in a number, without a newline: if it was cut, the number may be short"
+
+@test "xy: a last line without newline is read, with a warning that names it" {
+	printf '0 0\n4 0\n4 4\n0 4\n' > whole.xy
+	printf '0 0\n4 0\n4 4\n0 4' > nonl.xy
+	run -0 --separate-stderr polyread nonl.xy
+	[ "$stderr" = "polyread: nonl.xy:4: $nonl" ]
+	[ "$output" = "$(polyread whole.xy)" ]
+	[ "${lines[6]}" = "v 0 4" ]
+	run -0 --separate-stderr polyread whole.xy
+	[ -z "$stderr" ]
+}
+
+@test "xy: a number cut short cannot be told from a whole one: read, with the warning" {
+	# 0 4.25 cut to 0 4.2: a whole number, the only sign the missing newline
+	printf '0 0\n4 0\n4 4\n0 4.2' > in
+	run -0 --separate-stderr polyread in
+	[ "$stderr" = "polyread: in:4: $nonl" ]
+	[ "${lines[6]}" = "v 0 4.2" ]
+}
+
+@test "xy: a last line cut to one number is refused" {
+	printf '0 0\n4 0\n4 4\n0' > cut.xy
+	run -1 --separate-stderr polyread cut.xy
+	[ "$stderr" = "polyread: cut.xy:4: expected two numbers, x y (read as xy: the first line holds two fields; use -f to choose)" ]
+	[ -z "$output" ]
+}
+
+@test "xy: no warning when the last line ends in a blank or is a comment" {
+	printf '0 0\n4 0\n4 4\n0 4 ' > in
+	run -0 --separate-stderr polyread in
+	[ -z "$stderr" ]
+	printf '0 0\n4 0\n4 4\n0 4\n# end 1' > in
+	run -0 --separate-stderr polyread in
+	[ -z "$stderr" ]
+	[ "${lines[6]}" = "v 0 4" ]
+}
+
+@test "csv: a last line without newline is read, with the warning" {
+	printf 'x,y\n0,0\n4,0\n4,4\n0,4' > in
+	run -0 --separate-stderr polyread in
+	[ "$stderr" = "polyread: in:5: $nonl" ]
+	[ "$output" = "$(printf 'x,y\n0,0\n4,0\n4,4\n0,4\n' | polyread)" ]
+	printf 'x,y\n0,0\n4,0\n4,4\n0,' > in
+	run -1 --separate-stderr polyread in
+	[ "${stderr%% (read as*}" = "polyread: in:5: not a number: " ]
+}
+
+@test "brep: an input that ends in a number warns; a cut that drops one fails" {
+	printf '3 0 2\n0 0 2 0 0 2\n0 0 2 0 2 2 0 2' > in
+	run -0 --separate-stderr polyread in
+	[ "$stderr" = "polyread: in:3: $nonl" ]
+	[ "$output" = "$(printf '3 0 2\n0 0 2 0 0 2\n0 0 2 0 2 2 0 2\n' | polyread)" ]
+	printf '3 0 2\n0 0 2 0 0 2\n0 0 2 0 2 2 0' > in
+	run -1 --separate-stderr polyread in
+	[ "${stderr%% (read as*}" = "polyread: in:3: input ends where universe y was expected" ]
+}
+
+@test "poly: an input that ends in a number warns; a cut inside a segment fails" {
+	head='4 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n4 0\n1 1 2\n2 2 3\n3 3 4\n'
+	printf "${head}4 4 1\n0" > in
+	run -0 --separate-stderr polyread in
+	[ "$stderr" = "polyread: in:11: $nonl" ]
+	[ "$output" = "$(printf "${head}4 4 1\n0\n" | polyread)" ]
+	# cut before the hole section, which may be left out: the segment warns
+	printf "${head}4 4 1" > in
+	run -0 --separate-stderr polyread in
+	[ "$stderr" = "polyread: in:10: $nonl" ]
+	printf "${head}4 4" > in
+	run -1 --separate-stderr polyread in
+	[ "${stderr%% (read as*}" = "polyread: in:10: input ends where endpoint was expected" ]
+}
+
+@test "wkt: a whole polygon without newline reads silently; one cut anywhere fails" {
+	printf 'POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))' > in
+	run -0 --separate-stderr polyread in
+	[ -z "$stderr" ]
+	[ "${lines[2]}" = "ring 1 outer 4" ]
+	printf 'POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)' > in
+	run -1 --separate-stderr polyread in
+	[ "${stderr%% (read as*}" = "polyread: in:1: input ends: expected ')'" ]
+	printf 'POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0' > in
+	run -1 --separate-stderr polyread in
+	[ "${stderr%% (read as*}" = "polyread: in:1: input ends: expected ')'" ]
+}
+
+@test "geojson: a whole object without newline reads silently; one cut fails" {
+	g='{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]]]}'
+	printf '%s' "$g" > in
+	run -0 --separate-stderr polyread in
+	[ -z "$stderr" ]
+	[ "${lines[2]}" = "ring 1 outer 4" ]
+	printf '%s' "${g%]]]\}}" > in
+	run -1 --separate-stderr polyread in
+	[ "${stderr%% (read as*}" = "polyread: in:1: input ends: expected ',' or ']'" ]
+}

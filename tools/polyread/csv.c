@@ -51,6 +51,7 @@ csvnumber(struct src *s, const char *q, const char **end)
 	if (rc < 0 || !(isspace((unsigned char)**end) || **end == ',' ||
 	    **end == '\0'))
 		badtoken(s, "not a number");
+	endnumber(s, *end);
 	return v;
 }
 

@@ -118,6 +118,9 @@ readinput(struct input *in, const char *path, const struct format *forced,
 	s.line = 1;
 	f->parse(&s, in);
 	readas = NULL;
+	if (s.cutline > 0)
+		warnat(s.name, s.cutline, "the input ends in a number, without "
+		    "a newline: if it was cut, the number may be short");
 	/* rings keep pointers to the name, not to the buffer */
 	free(s.buf);
 }

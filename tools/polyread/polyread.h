@@ -56,6 +56,7 @@ struct src {
 	size_t		 len;
 	char		*p;
 	long		 line;
+	long		 cutline;	/* of a number the input ends in */
 };
 
 /*
@@ -78,6 +79,7 @@ void	 readall(struct src *, const char *);
 void	 readerr(const char *, long, const char *, ...);
 int	 linefields(const char *, const char **, size_t *, int);
 int	 skipspace(struct src *);
+void	 endnumber(struct src *, const char *);
 long	 lastline(const struct src *);
 void	 badtoken(struct src *, const char *);
 double	 number(struct src *, const char *);

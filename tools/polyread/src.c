@@ -113,6 +113,19 @@ readall(struct src *s, const char *path)
 	}
 	s->p = s->buf;
 	s->line = 1;
+	s->cutline = 0;
+}
+
+/*
+ * After a number read up to end: whether the input ends there, with no
+ * byte after the number, as a file still being written may.  A number cut
+ * short is still a number (1.2 of 1.25), so main warns when it was read.
+ */
+void
+endnumber(struct src *s, const char *end)
+{
+	if (*end == '\0')
+		s->cutline = s->line;
 }
 
 /*
@@ -217,6 +230,7 @@ number(struct src *s, const char *what)
 	if (rc < 0 || (*end != '\0' && !isspace((unsigned char)*end) &&
 	    *end != '#' && *end != ',' && *end != ')'))
 		badtoken(s, "not a number");
+	endnumber(s, end);
 	s->p = (char *)end;
 	return v;
 }

@@ -83,6 +83,7 @@ xynumber(struct src *s, const char *q, const char **end)
 	if (rc < 0 || !(**end == ' ' || **end == '\n' ||
 	    isspace((unsigned char)**end) || **end == '\0'))
 		badtoken(s, "not a number");
+	endnumber(s, *end);
 	return v;
 }
 
