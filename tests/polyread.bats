@@ -843,3 +843,22 @@ nonl="the input ends in a number, without a newline: if it was cut, the number m
 	run -1 --separate-stderr polyread in
 	[ "${stderr%% (read as*}" = "polyread: in:1: input ends: expected ',' or ']'" ]
 }
+
+@test "xy and csv: a comment after a vertex on its line is a comment" {
+	printf '0 0\n4 0\n0 4\n' | polyread > plain.qt
+	printf '0 0 # origin\n4 0# east\n0 4\t# north\n' | polyread > xy.qt
+	cmp plain.qt xy.qt
+	printf '0,0 # origin\n4,0# east\n0, 4 #north\n' | polyread -f csv > csv.qt
+	cmp plain.qt csv.qt
+	# a third number before the comment is still a third number
+	run -1 --separate-stderr polyread <<-'IN'
+	0 0
+	4 0 5 # east
+	0 4
+	IN
+	[ "${stderr%% (read as*}" = "polyread: stdin:2: expected two numbers, x y" ]
+	# and a comment glued to a number ends it, a letter does not
+	printf '0 0\n4 0x\n0 4\n' > in
+	run -1 --separate-stderr polyread in
+	[ "${stderr%%: 0x*}" = "polyread: in:2: not a number" ]
+}

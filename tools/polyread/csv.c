@@ -49,7 +49,7 @@ csvnumber(struct src *s, const char *q, const char **end)
 	if ((rc = parsereal(q, end, &v)) == -2)
 		badtoken(s, "number out of range");
 	if (rc < 0 || !(isspace((unsigned char)**end) || **end == ',' ||
-	    **end == '\0'))
+	    **end == '#' || **end == '\0'))
 		badtoken(s, "not a number");
 	endnumber(s, *end);
 	return v;

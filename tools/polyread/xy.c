@@ -81,7 +81,7 @@ xynumber(struct src *s, const char *q, const char **end)
 		badtoken(s, "number out of range");
 	/* the usual ends first, before isspace's call */
 	if (rc < 0 || !(**end == ' ' || **end == '\n' ||
-	    isspace((unsigned char)**end) || **end == '\0'))
+	    isspace((unsigned char)**end) || **end == '#' || **end == '\0'))
 		badtoken(s, "not a number");
 	endnumber(s, *end);
 	return v;
@@ -133,7 +133,7 @@ parselines(struct src *s, struct input *in, int (*header)(struct src *),
 		p++;
 	}
 	for (; *p != '\0'; p = *eol ? eol + 1 : eol) {
-		const char *q;
+		const char *q, *end;
 		double x, y;
 
 		line++;
@@ -150,7 +150,9 @@ parselines(struct src *s, struct input *in, int (*header)(struct src *),
 		if (*q == '#')
 			continue;
 		s->line = line;
-		pair(s, q, eol, &x, &y);
+		/* A comment may follow the vertex on its line. */
+		end = memchr(q, '#', (size_t)(eol - q));
+		pair(s, q, end != NULL ? end : eol, &x, &y);
 		if (r == NULL)
 			r = newring(in, s->name, line, UNKNOWN, -1);
 		addvertex(in, r, x, y, line);
