@@ -103,7 +103,7 @@ xs_add(struct xsum *s, double b)
 }
 
 /* Adds a * b exactly. */
-static void
+void
 xs_addprod(struct xsum *s, double a, double b)
 {
 	double p, e;

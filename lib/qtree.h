@@ -120,6 +120,7 @@ struct cell {
 	double		 x, y, size;
 	char		 class;	/* 'F', 'E', 'P'; 0 for a node */
 	unsigned long long id;	/* a leaf's element number; 0 for none */
+	double		 frac;	/* a leaf's area fraction; -1 for none */
 	const char	*text;	/* as read, when spelled as written: */
 	size_t		 textlen;	/* the bytes through the class */
 };
@@ -291,6 +292,9 @@ const char *qt_opterms(char *const *, int, long, int *);
  * 0, else 'F' or 'E'.  Rings count from 0 as added; split_ringlevel gives
  * one a level of its own (the default is QT_MAXLEVEL), and split_allows
  * says whether some ring with an edge in level's first n allows level + 1.
+ * split_edge(sp, level, k, &a, &b) gives the k-th edge of level's list,
+ * from a to b as its ring runs, and returns its number: edges count from
+ * 0 over the rings as added.
  */
 struct splitter *split_new(const struct universe *);
 void	 split_free(struct splitter *);
@@ -302,6 +306,8 @@ void	 split_children(struct splitter *, int, uint64_t, uint64_t, size_t,
 	    int, int[4]);
 size_t	 split_child(struct splitter *, int, size_t, int);
 int	 split_allows(const struct splitter *, int, size_t);
+size_t	 split_edge(const struct splitter *, int, size_t, struct point *,
+	    struct point *);
 
 static inline char
 split_class(size_t n, int inside)
@@ -319,6 +325,7 @@ void	 qt_setuniverse(const struct universe *);
 void	 qt_level(int);
 void	 qt_ring(const struct ring *);
 void	 qt_cell(const struct cell *, unsigned long long);
+void	 qt_cellfrac(const struct cell *, unsigned long long, double);
 void	 qt_gridvertex(unsigned long long, int, uint64_t, uint64_t);
 void	 qt_elem(unsigned long long, const char *, size_t,
 	    const unsigned long long *);
@@ -347,6 +354,7 @@ struct moments {
 void	 xs_init(struct xsum *);
 void	 xs_free(struct xsum *);
 void	 xs_add(struct xsum *, double);
+void	 xs_addprod(struct xsum *, double, double);
 void	 xs_addprod3(struct xsum *, double, double, double);
 void	 xs_addxs(struct xsum *, const struct xsum *, double);
 int	 xs_sign(const struct xsum *);
@@ -356,5 +364,22 @@ void	 mo_zero(struct moments *);
 void	 mo_edge(struct moments *, struct point, struct point);
 void	 mo_addmo(struct moments *, const struct moments *, int);
 void	 mo_result(const struct moments *, double *, double *, double *);
+
+/*
+ * cut.c: cut cells.  A cutter holds the rings, added in order, and gives
+ * a cell's class by them and its area fraction, the share of the cell's
+ * area in the region: 1 for F, 0 for E, and for P from the edges that
+ * meet the cell, the quotient correctly rounded from an area computed to
+ * about 150 bits (see qtleaves(1)).  A ring whose kind and direction
+ * disagree (an outer ring clockwise) has its edges taken backwards.
+ * cut_addarea adds a fraction times a cell's area exactly, the area of
+ * the cell between its corners as qtree(5) defines them.
+ */
+struct cutter *cut_new(const struct universe *);
+void	 cut_free(struct cutter *);
+void	 cut_addring(struct cutter *, const struct ring *);
+char	 cut_cell(struct cutter *, const struct cell *, double *);
+void	 cut_addarea(struct xsum *, const struct universe *,
+	    const struct cell *, double);
 
 #endif

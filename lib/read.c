@@ -288,6 +288,24 @@ setprefixes(struct qtreader *r, const char *path, int n, int k)
 	}
 }
 
+/*
+ * A leaf's area fraction: a real from 0 to 1, 1 for a full leaf and 0 for
+ * an empty one, strictly between for a partial one but for rounding.
+ */
+static double
+fracfield(struct qtreader *r, const char *s, char class)
+{
+	const char *end;
+	double v;
+
+	if (parsereal(s, &end, &v) != 0 || *end != '\0' || !(v >= 0 && v <= 1))
+		qt_fail(r, "area fraction is not a real from 0 to 1: %s", s);
+	if ((class == 'F' && v != 1) || (class == 'E' && v != 0))
+		qt_fail(r, "area fraction of a%s leaf is %s, not %d",
+		    class == 'F' ? " full" : "n empty", s, class == 'F');
+	return v;
+}
+
 static void
 cellrec(struct qtreader *r, struct qtrec *rec)
 {
@@ -299,7 +317,7 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 	int level, k;
 
 	if (rec->kind == QT_LEAF)
-		nfields(r, 9, 10);
+		nfields(r, 9, 11);
 	else
 		nfields(r, 8, 8);
 	if (!r->haveuniverse)
@@ -350,15 +368,18 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 	}
 	c->class = 0;
 	c->id = 0;
+	c->frac = -1;
 	if (rec->kind == QT_LEAF) {
 		const char *s = r->field[8];
 
 		if ((s[0] != 'F' && s[0] != 'E' && s[0] != 'P') || s[1] != '\0')
 			qt_fail(r, "leaf class is not F, E or P: %s", s);
 		c->class = s[0];
-		if (r->nfield == 10)
+		if (r->nfield >= 10)
 			c->id = intfield(r, r->field[9], "element id", 1,
 			    LLONG_MAX);
+		if (r->nfield == 11)
+			c->frac = fracfield(r, r->field[10], c->class);
 	}
 	c->text = NULL;
 	c->textlen = 0;
@@ -489,6 +510,7 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 		return 0;
 	c->class = 0;
 	c->id = 0;
+	c->frac = -1;
 	if (rec->kind == QT_LEAF) {
 		if (*p != 'F' && *p != 'E' && *p != 'P')
 			return 0;

@@ -427,3 +427,16 @@ split_allows(const struct splitter *sp, int level, size_t n)
 			return 1;
 	return 0;
 }
+
+/* The k-th edge of the level's list, and its number. */
+size_t
+split_edge(const struct splitter *sp, int level, size_t k, struct point *a,
+    struct point *b)
+{
+	uint32_t i = sp->list[level].edges[k];
+	const struct edge *e = &sp->edges[i];
+
+	a->x = e->ax, a->y = e->ay;
+	b->x = e->bx, b->y = e->by;
+	return i;
+}

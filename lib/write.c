@@ -243,11 +243,11 @@ qt_ring(const struct ring *ring)
 	}
 }
 
-/* A cell, with element number id when it is not 0. */
-void
-qt_cell(const struct cell *c, unsigned long long id)
+/* A cell's fields, with element number id when it is not 0. */
+static char *
+cellfields(const struct cell *c, unsigned long long id)
 {
-	char *p = room(c->level + 256);	/* 3 integers, 3 reals, a path */
+	char *p = room(c->level + 256);	/* 3 integers, 4 reals, a path */
 	const struct coordtext *kx, *ky, *ks;
 
 	if (c->text != NULL) {
@@ -290,6 +290,27 @@ qt_cell(const struct cell *c, unsigned long long id)
 		*p++ = ' ';
 		p = putnum(p, &w.cellid, id);
 	}
+	return p;
+}
+
+/* A cell, with element number id when it is not 0. */
+void
+qt_cell(const struct cell *c, unsigned long long id)
+{
+	char *p = cellfields(c, id);
+
+	*p++ = '\n';
+	recorded(p);
+}
+
+/* A leaf with its element number id > 0 and its area fraction. */
+void
+qt_cellfrac(const struct cell *c, unsigned long long id, double frac)
+{
+	char *p = cellfields(c, id);
+
+	*p++ = ' ';
+	p = fmtreal(p, frac);
 	*p++ = '\n';
 	recorded(p);
 }

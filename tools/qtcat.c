@@ -34,6 +34,7 @@ struct input {
 struct heldcell {
 	uint64_t	 ix, iy;
 	unsigned long long id;
+	double		 frac;
 	long		 lineno;
 	int		 input;
 	unsigned char	 level;
@@ -380,7 +381,10 @@ putcell(const struct cell *c, const char *name, long lineno)
 			return;
 		k = 0;
 	}
-	qt_cell(c, c->id);
+	if (c->frac >= 0)
+		qt_cellfrac(c, c->id, c->frac);
+	else
+		qt_cell(c, c->id);
 	memcpy(last.path + k, c->path + k, c->level - k);
 	last.path[c->level] = '\0';
 	last.level = c->level;
@@ -468,6 +472,7 @@ hold(const struct input *p)
 	k->ix = c->ix;
 	k->iy = c->iy;
 	k->id = c->id;
+	k->frac = c->frac;
 	k->lineno = p->rec.lineno;
 	k->input = p - in;
 	k->level = c->level;
@@ -517,6 +522,7 @@ sortcells(void)
 		c.iy = held[i].iy;
 		c.class = held[i].class;
 		c.id = held[i].id;
+		c.frac = held[i].frac;
 		c.path = cellpath(path, c.level, c.ix, c.iy);
 		putcell(&c, in[held[i].input].name, held[i].lineno);
 	}

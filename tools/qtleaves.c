@@ -27,11 +27,12 @@
 static void
 usage(int help)
 {
-	usageexit(help, "usage: qtleaves [-hnv] [-c classes] [-f format] "
+	usageexit(help, "usage: qtleaves [-ahnv] [-c classes] [-f format] "
 	    "[file]\n");
 }
 
 static struct corners *corners;	/* the vertices, with -n */
+static struct cutter *cutter;	/* the rings, with -a */
 
 /*
  * Every leaf passes here with -n, kept or not, to move the Z order
@@ -69,11 +70,14 @@ enum format { QTREE, GEOJSON, WKT };
  */
 static void
 putgis(enum format format, const struct universe *u, const struct cell *c,
-    unsigned long long id)
+    unsigned long long id, double frac)
 {
+	char f[32];
+
 	char x[2][32], y[2][32];
 	int i;
 
+	fmtreal(f, frac);
 	fmtreal(x[0], c->x);
 	fmtreal(y[0], c->y);
 	fmtreal(x[1], u->x0 + (double)(c->ix + 1) * c->size);
@@ -84,13 +88,14 @@ putgis(enum format format, const struct universe *u, const struct cell *c,
 		for (i = 0; i < 5; i++)
 			printf("%s%s %s", i > 0 ? ", " : "",
 			    x[(i + 1) / 2 % 2], y[i / 2 % 2]);
-		printf("))\n");
+		printf("))%s%s\n", frac >= 0 ? "\t" : "", frac >= 0 ? f : "");
 		return;
 	}
 	printf("%s{\"type\":\"Feature\",\"properties\":{\"path\":\"%s\","
-	    "\"level\":%d,\"class\":\"%c\",\"id\":%llu},\"geometry\":"
+	    "\"level\":%d,\"class\":\"%c\",\"id\":%llu%s%s},\"geometry\":"
 	    "{\"type\":\"Polygon\",\"coordinates\":[[", id > 1 ? ",\n" : "",
-	    c->path, c->level, c->class, id);
+	    c->path, c->level, c->class, id, frac >= 0 ? ",\"frac\":" : "",
+	    frac >= 0 ? f : "");
 	for (i = 0; i < 5; i++)
 		printf("%s[%s,%s]", i > 0 ? "," : "", x[(i + 1) / 2 % 2],
 		    y[i / 2 % 2]);
@@ -120,11 +125,16 @@ main(int argc, char *argv[])
 	struct universe u = { 0, 0, 1 };
 	enum format format = QTREE;
 	unsigned keep = CLASSBIT('F') | CLASSBIT('P');
-	int ch, kept, nflag = 0, verbose = 0;
+	int ch, kept, aflag = 0, nflag = 0, verbose = 0;
+	double frac;
+	char class;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "c:f:nvh")) != -1)
+	while ((ch = getopt(argc, argv, "ac:f:nvh")) != -1)
 		switch (ch) {
+		case 'a':
+			aflag = 1;
+			break;
 		case 'c':
 			keep = optclasses(optarg);
 			break;
@@ -156,6 +166,13 @@ main(int argc, char *argv[])
 	else if (format == GEOJSON)
 		printf("{\"type\":\"FeatureCollection\",\"features\":[\n");
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
+		if (aflag && kind == QT_UNIVERSE)
+			cutter = cut_new(&rec.u);
+		else if (aflag && kind == QT_RING)
+			cut_addring(cutter, &rec.ring);
+		else if (aflag && kind == QT_OBJECT)
+			qt_fail(r, "-a: the cells of a combined stream are not "
+			    "those of its rings");
 		if (format != QTREE && kind != QT_LEAF) {
 			if (kind == QT_UNIVERSE)
 				u = rec.u;
@@ -175,10 +192,19 @@ main(int argc, char *argv[])
 			break;
 		case QT_LEAF:
 			kept = (keep & CLASSBIT(rec.c.class)) != 0;
-			if (kept && format == QTREE)
+			frac = rec.c.frac;
+			if (aflag && kept &&
+			    (class = cut_cell(cutter, &rec.c, &frac)) !=
+			    rec.c.class)
+				qt_fail(r, "leaf %s is %c, but the stream's rings "
+				    "make it %c: the rings are not the tree's",
+				    rec.c.path, rec.c.class, class);
+			if (kept && format == QTREE && frac >= 0)
+				qt_cellfrac(&rec.c, ++id, frac);
+			else if (kept && format == QTREE)
 				qt_cell(&rec.c, ++id);
 			else if (kept)
-				putgis(format, &u, &rec.c, ++id);
+				putgis(format, &u, &rec.c, ++id, frac);
 			if (nflag)
 				meshleaf(&rec.c, kept, id);
 			break;
@@ -194,6 +220,7 @@ main(int argc, char *argv[])
 		}
 	}
 	qt_close(r);
+	cut_free(cutter);
 	if (format == QTREE)
 		qt_end();
 	else if (format == GEOJSON)

@@ -40,6 +40,8 @@ static struct tree {
 	int		 haveuniverse;
 	struct levelstat lev[QT_MAXLEVEL + 1];
 	int		 deepest;
+	struct xsum	 cut;	/* the leaves' area fractions times areas */
+	unsigned long long ncut;	/* leaves with a fraction */
 } tree = { .deepest = -1 };
 
 /*
@@ -326,6 +328,10 @@ addcell(const struct cell *c)
 		add128(&s->nodesx, 2 * c->ix + 1);
 		add128(&s->nodesy, 2 * c->iy + 1);
 		return;
+	}
+	if (c->frac >= 0) {
+		cut_addarea(&tree.cut, &tree.u, c, c->frac);
+		tree.ncut++;
 	}
 	k = c->class == 'F' ? F : c->class == 'E' ? E : P;
 	s->leaves[k]++;
@@ -748,7 +754,7 @@ cutfigures(struct cutfigures *f, double area, int cut)
 }
 
 static void
-leafareafigures(double area)
+leafareafigures(double area, unsigned long long leaves)
 {
 	struct cutfigures f;
 
@@ -766,6 +772,12 @@ leafareafigures(double area)
 	if (f.afp > 0) {
 		putreal("centroid_full_partial_x", f.cfpx);
 		putreal("centroid_full_partial_y", f.cfpy);
+	}
+	/* with qtleaves -a: the region's area from the cut cells */
+	if (tree.ncut > 0 && tree.ncut == leaves) {
+		putreal("area_cut", xs_round(&tree.cut));
+		if (f.haveerr)
+			putreal("area_cut_relerr", relerr(&tree.cut, area));
 	}
 }
 
@@ -790,7 +802,7 @@ cellfigures(double area)
 	if (nodes + leaves == 0)
 		return;
 	depthfigures(leaves);
-	leafareafigures(area);
+	leafareafigures(area, leaves);
 }
 
 /* Elements by type, quads first, then the others by name. */
@@ -960,6 +972,7 @@ main(int argc, char *argv[])
 
 	mo_init(&poly.region);
 	mo_init(&poly.ring);
+	xs_init(&tree.cut);
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    QT_ARCS | (verbose ? QT_VERBOSE : 0));
 	readstream(r);

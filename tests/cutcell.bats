@@ -1,0 +1,198 @@
+#!/usr/bin/env bats
+# Cut cells: qtleaves -a's area fractions and qtstats's area_cut.  The
+# fractions are worked out by hand (the comments say how) and by
+# tests/cutcheck.py, which clips every ring to the cell in exact rationals
+# (Sutherland-Hodgman) and rounds the exact fraction once; the sums are
+# checked against the rings' own area, and again in awk.
+
+load test_helper
+
+# The leaves of a stream as "PATH CLASS FRAC".
+fracs() {
+	awk '$1 == "leaf" { print $2, $9, $11 }' "$@"
+}
+
+# The double nearest each fraction P/Q given as arguments, one a line.
+nearest() {
+	python3 -c 'import sys
+from fractions import Fraction
+for a in sys.argv[1:]:
+    print(repr(float(Fraction(a))))' "$@"
+}
+
+@test "a square across four cells: the overlaps, by hand" {
+	# [0.5, 2.5]^2 in the universe [0, 4]^2: at level 1 the south-west
+	# quadrant holds 1.5 x 1.5 of it (2.25 of 4), the south-east and
+	# north-west 0.5 x 1.5, the north-east 0.5 x 0.5; at level 2 the
+	# corner cells a 0.5 x 0.5 piece, the side cells 1 x 0.5, the middle
+	# all
+	printf '0.5 0.5\n2.5 0.5\n2.5 2.5\n0.5 2.5\n' | polyread -u 0,0,4 > sq.qt
+	qtsplit -l 1 sq.qt | qtleaves -a -c FEP | fracs > got
+	printf '0 P 0.5625\n1 P 0.1875\n2 P 0.1875\n3 P 0.0625\n' > want
+	diff -u want got
+	qtsplit -l 2 sq.qt | qtleaves -a | fracs > got
+	cat > want <<-EOF
+	00 P 0.25
+	01 P 0.5
+	02 P 0.5
+	03 F 1
+	10 P 0.25
+	12 P 0.5
+	20 P 0.25
+	21 P 0.5
+	30 P 0.25
+	EOF
+	diff -u want got
+}
+
+@test "a triangle: fractions of its quadrants and of cells at level 2, by hand" {
+	# (0,0), (4,0), (0,3): the hypotenuse y = 3 - 3x/4 cuts from the
+	# south-west quadrant the triangle (4/3,2), (2,2), (2,1.5) of area
+	# 1/6 (23/24 left), leaves in the south-east one the triangle (2,0),
+	# (4,0), (2,1.5) of 3/2 (3/8) and in the north-west one (0,2),
+	# (4/3,2), (0,3) of 2/3 (1/6)
+	printf '0 0\n4 0\n0 3\n' | polyread -u 0,0,4 > tri.qt
+	qtsplit -l 1 tri.qt | qtleaves -a -c FEP | fracs > got
+	nearest 23/24 3/8 1/6 | paste -d ' ' - - - > f
+	read -r a b c < f
+	printf '0 P %s\n1 P %s\n2 P %s\n3 E 0\n' "$a" "$b" "$c" > want
+	diff -u want got
+	# level 2, unit cells: (1,1) loses the same 1/6 (5/6), (2,0) the
+	# triangle (8/3,1), (3,1), (3,0.75) of 1/24, and (3,0) keeps
+	# (3,0), (4,0), (3,0.75), 3/8
+	qtsplit -l 2 tri.qt | qtleaves -a | fracs > got
+	nearest 5/6 23/24 3/8 | paste -d ' ' - - - > f
+	read -r a b c < f
+	grep -qx "03 P $a" got
+	grep -qx "10 P $b" got
+	grep -qx "11 P $c" got
+}
+
+@test "a square with a hole: each quadrant loses its part of the hole" {
+	# [0,4]^2 less [1,3] x [1,2.5]: the south quadrants lose 1 x 1 of
+	# their 4, the north ones 1 x 0.5
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n3 1\n3 2.5\n1 2.5\n' | polyread > h.qt
+	qtsplit -l 1 h.qt | qtleaves -a | fracs > got
+	printf '0 P 0.75\n1 P 0.75\n2 P 0.875\n3 P 0.875\n' > want
+	diff -u want got
+}
+
+@test "every leaf's fraction is the exact one rounded, at levels 1 to 4" {
+	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt \
+	    "$SAMPLES"/*.poly "$SAMPLES"/*.geojson "$FIXTURES"/*.xy; do
+		polyread "$f" > p.qt
+		for l in 1 2 3 4; do
+			qtsplit -l $l p.qt | qtleaves -a -c FEP > a.qt
+			run -0 python3 "$TOP/tests/cutcheck.py" < a.qt
+			[ "${lines[${#lines[@]}-1]##* worst }" = 0 ] || {
+				echo "$f $l: ${lines[${#lines[@]}-1]}"; return 1; }
+		done
+	done
+}
+
+@test "edges through cell corners: the diamond's fractions are exact" {
+	# its edges run along the diagonals of cells at every level, so the
+	# walk round a cell meets them at its corners
+	for l in 1 2 3 5; do
+		polyread "$FIXTURES/diamond.xy" | qtsplit -l $l | qtleaves -a > a.qt
+		run -0 python3 "$TOP/tests/cutcheck.py" < a.qt
+		[ "${lines[${#lines[@]}-1]##* worst }" = 0 ]
+	done
+	polyread "$FIXTURES/diamond.xy" | qtsplit -l 1 | qtleaves -a | fracs > got
+	printf '0 P 0.5\n1 P 0.5\n2 P 0.5\n3 P 0.5\n' > want
+	diff -u want got
+}
+
+@test "rings that run against their kind give the same fractions" {
+	# the amoeba with every ring's vertices reversed: an outer ring
+	# clockwise, the hole counter-clockwise
+	polyread "$SAMPLES/amoeba.brep" > p.qt
+	awk '$1 == "v" { v[++n] = $0; next }
+	    n > 0 { for (i = n; i >= 1; i--) print v[i]; n = 0 } { print }' \
+	    p.qt > r.qt
+	[ "$(grep -c '^v' r.qt)" = "$(grep -c '^v' p.qt)" ]
+	! cmp -s p.qt r.qt
+	qtsplit -l 5 p.qt | qtleaves -a | fracs > want
+	qtsplit -l 5 r.qt | qtleaves -a | fracs > got
+	diff -u want got
+}
+
+@test "area_cut is the polygon's area at every level, on every sample and a star" {
+	awk -v shape=star -v n=1000 -f "$TOP/tools/genpoly.awk" > star.xy
+	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt \
+	    "$SAMPLES"/*.poly "$SAMPLES"/*.geojson star.xy; do
+		polyread "$f" > p.qt
+		for l in 1 2 3 4 5 6 7 8 9 10 11 12; do
+			qtsplit -l $l p.qt | qtleaves -a > a.qt
+			qtstats a.qt > s
+			# the relative error as qtstats takes it, exactly
+			awk -v f="$f" -v l=$l '
+			    $1 == "polygon_area" { p = $2 }
+			    $1 == "area_cut" { c = $2 }
+			    $1 == "area_cut_relerr" { e = $2 }
+			    END { if (!(p > 0 && e <= 1e-12 &&
+				(c - p) / p <= 1e-12 && (p - c) / p <= 1e-12)) {
+				print f, l, p, c, e; exit 1 } }' s
+			# and in awk: each leaf's fraction times its area
+			# between its corners, summed in doubles
+			awk -v f="$f" -v l=$l -v p="$(awk '$1 == "polygon_area" { print $2 }' s)" '
+			    $1 == "universe" { x0 = $2; y0 = $3; u = $4 }
+			    $1 == "leaf" { h = u / 2 ^ $3
+				w = (x0 + ($4 + 1) * h) - $6
+				t = (y0 + ($5 + 1) * h) - $7
+				a += $11 * w * t }
+			    END { d = (a - p) / p; if (d < 0) d = -d
+				if (d > 1e-12) { print f, l, p, a; exit 1 } }' a.qt
+		done
+	done
+}
+
+@test "qtstats writes area_cut only when every leaf carries a fraction" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 > t.qt
+	run -0 bash -c 'qtstats t.qt | awk "/^area_cut/ { n++ } END { print n + 0 }"'
+	[ "$output" = 0 ]
+	qtleaves -a t.qt > a.qt
+	run -0 bash -c 'qtstats a.qt | grep -c "^area_cut"'
+	[ "$output" = 2 ]
+	# a leaf without its fraction: the sum would be a subset's
+	{ grep -v '^end' a.qt | sed '$s/ [^ ]*$//'; } | qtcat -u > m.qt
+	[ "$(awk '$1 == "leaf" && NF == 10' m.qt | wc -l)" = 1 ]
+	run -0 bash -c 'qtstats m.qt | awk "/^area_cut/ { n++ } END { print n + 0 }"'
+	[ "$output" = 0 ]
+}
+
+@test "fractions pass through qtleaves and qtcat -u unchanged" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | qtleaves -a > a.qt
+	qtleaves a.qt | cmp - a.qt
+	qtleaves -a a.qt | cmp - a.qt
+	{ grep -v '^leaf\|^end' a.qt; grep '^leaf' a.qt | sort -r; } |
+	    qtcat -u | cmp - a.qt
+}
+
+@test "the GIS formats carry the fraction" {
+	printf '0 0\n2 0\n0 2\n' | polyread -l 1 | qtsplit > t.qt
+	run -0 bash -c 'qtleaves -a -f wkt t.qt | cut -f 6'
+	[ "$output" = "$(printf '1\n0.5\n0.5')" ]
+	run -0 bash -c 'qtleaves -a -f geojson t.qt | grep -o "\"frac\":[0-9.]*"'
+	[ "$output" = "$(printf '"frac":1\n"frac":0.5\n"frac":0.5')" ]
+}
+
+@test "-a refuses a tree that its rings do not make, and a combined stream" {
+	printf '0 0\n2 0\n0 2\n' | polyread -l 1 | qtsplit |
+	    sed 's/^leaf 3 \(.*\) E$/leaf 3 \1 F/' > t.qt
+	run -1 --separate-stderr qtleaves -a t.qt
+	[ "$stderr" = "qtleaves: t.qt:12: leaf 3 is F, but the stream's rings make it E: the rings are not the tree's" ]
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 3 > a.qt
+	qtbool -o and a.qt a.qt > b.qt
+	run -1 --separate-stderr qtleaves -a b.qt
+	[[ "$stderr" == *"-a: the cells of a combined stream are not those of its rings" ]]
+}
+
+@test "a reader refuses a fraction out of range, or not 1 for F and 0 for E" {
+	printf 'qtree 1\nuniverse 0 0 4\nleaf . 0 0 0 0 0 4 E 1 0.25\nend 2\n' > e.qt
+	run -1 --separate-stderr qtstats e.qt
+	[ "$stderr" = "qtstats: e.qt:3: area fraction of an empty leaf is 0.25, not 0" ]
+	printf 'qtree 1\nuniverse 0 0 4\nleaf . 0 0 0 0 0 4 P 1 -0.5\nend 2\n' > n.qt
+	run -1 --separate-stderr qtstats n.qt
+	[ "$stderr" = "qtstats: n.qt:3: area fraction is not a real from 0 to 1: -0.5" ]
+}
