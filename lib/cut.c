@@ -36,11 +36,36 @@
 #include "qtree.h"
 #include "internal.h"
 
+/* Sides of the cell, as walked from its lower left corner. */
+enum { BOTTOM, RIGHT, TOP, LEFT, NONE };
+
+struct piece {
+	struct point	 a, b;		/* the edge, as taken */
+	size_t		 edge;
+	int		 side[2];	/* entry, exit: BOTTOM .. LEFT, or NONE */
+	struct point	 p[2];		/* where it enters and leaves */
+	int		 used;
+};
+
+struct event {
+	size_t	piece;
+	int	end;		/* 0 entry, 1 exit */
+};
+
 struct cutter {
 	struct universe	 u;
 	struct splitter	*sp;
 	unsigned char	*flip;		/* per edge: taken backwards */
 	size_t		 nedges;
+	size_t		*rstart;	/* per ring: its first edge; one past */
+	size_t		 nrings;
+	/* cut_loops: the pieces, crossings and loops of the last cell */
+	struct piece	*pc;
+	struct event	*ev;
+	size_t		 pccap;
+	struct point	*lp;
+	size_t		*ll, nlp, lpcap, nll, llcap, lstart;
+	double		 box[4];		/* x0, x1, y0, y1 */
 	/* the path of the splitter's lists, down to the cell at hand */
 	int		 depth;		/* -1: none yet */
 	uint64_t	 ix, iy;
@@ -58,6 +83,8 @@ cut_new(const struct universe *u)
 	ct->u = *u;
 	ct->sp = split_new(u);
 	ct->depth = -1;
+	ct->rstart = xmalloc(sizeof(*ct->rstart));
+	ct->rstart[0] = 0;
 	xs_init(&ct->s);
 	xs_init(&ct->k);
 	xs_init(&ct->n0);
@@ -73,6 +100,11 @@ cut_free(struct cutter *ct)
 		return;
 	split_free(ct->sp);
 	free(ct->flip);
+	free(ct->rstart);
+	free(ct->pc);
+	free(ct->ev);
+	free(ct->lp);
+	free(ct->ll);
 	xs_free(&ct->s);
 	xs_free(&ct->k);
 	xs_free(&ct->n0);
@@ -102,6 +134,9 @@ cut_addring(struct cutter *ct, const struct ring *g)
 	ct->flip = xreallocarray(ct->flip, ct->nedges + g->n, 1);
 	memset(ct->flip + ct->nedges, flip, g->n);
 	ct->nedges += g->n;
+	ct->rstart = xreallocarray(ct->rstart, ct->nrings + 2,
+	    sizeof(*ct->rstart));
+	ct->rstart[++ct->nrings] = ct->nedges;
 	ct->depth = -1;
 }
 
@@ -203,8 +238,41 @@ addquot(struct xsum *s, struct xsum *num, const double d[2])
 	}
 }
 
-/* Sides of the cell, as walked from its lower left corner. */
-enum { BOTTOM, RIGHT, TOP, LEFT, NONE };
+/*
+ * The side through which the edge a -> b, which meets the open cell
+ * [x0, x1] x [y0, y1], enters it (end 0) or leaves it (end 1), or NONE
+ * when its vertex there lies inside: the line x = lx or y = ly it crosses
+ * there, the later of the two on entry and the earlier on leaving, x's on
+ * a tie (a corner), so that a crossing at the lower left corner lies on
+ * the left side, where the walk round the cell ends.
+ */
+static int
+endside(struct point a, struct point b, const double x[2], const double y[2],
+    int end)
+{
+	int sx = (b.x > a.x) - (b.x < a.x), sy = (b.y > a.y) - (b.y < a.y);
+	int inx, iny, pickx;
+	double lx, ly;
+
+	inx = sx != 0 && (end == 0 ? (sx > 0 ? a.x <= x[0] : a.x >= x[1]) :
+	    (sx > 0 ? b.x >= x[1] : b.x <= x[0]));
+	iny = sy != 0 && (end == 0 ? (sy > 0 ? a.y <= y[0] : a.y >= y[1]) :
+	    (sy > 0 ? b.y >= y[1] : b.y <= y[0]));
+	lx = x[(sx > 0) == (end == 1)];
+	ly = y[(sy > 0) == (end == 1)];
+	if (inx && iny) {
+		/* sign(tx - ty) = -sign(orient) sign(dx) sign(dy) */
+		int o = -orient2d(a.x, a.y, b.x, b.y, lx, ly) * sx * sy;
+
+		pickx = end == 0 ? o >= 0 : o <= 0;
+	} else if (inx || iny)
+		pickx = inx;
+	else
+		return NONE;
+	if (pickx)
+		return lx == x[0] ? LEFT : RIGHT;
+	return ly == y[0] ? BOTTOM : TOP;
+}
 
 /*
  * The edge a -> b, which meets the open cell [x0, x1] x [y0, y1], adds
@@ -215,9 +283,7 @@ addedge(struct cutter *ct, struct point a, struct point b, const double x[2],
     const double y[2], const double w[2], const double h[2])
 {
 	double dx[2], dy[2], ax0[2], ay0[2], t[2], u[2];
-	int sx = (b.x > a.x) - (b.x < a.x), sy = (b.y > a.y) - (b.y < a.y);
-	int end, side[2], inx, iny;
-	double lx, ly;
+	int end, side[2], i, j;
 
 	diff(b.x, a.x, dx);
 	diff(b.y, a.y, dy);
@@ -225,50 +291,24 @@ addedge(struct cutter *ct, struct point a, struct point b, const double x[2],
 	diff(a.y, y[0], ay0);
 	ct->k.n = ct->n0.n = ct->nx.n = ct->ny.n = 0;
 	/* K = (ax - x0) dy - (ay - y0) dx */
-	for (inx = 0; inx < 2; inx++)
-		for (iny = 0; iny < 2; iny++) {
-			if (ax0[inx] != 0 && dy[iny] != 0)
-				xs_addprod(&ct->k, ax0[inx], dy[iny]);
-			if (ay0[inx] != 0 && dx[iny] != 0)
-				xs_addprod(&ct->k, -ay0[inx], dx[iny]);
+	for (i = 0; i < 2; i++)
+		for (j = 0; j < 2; j++) {
+			if (ax0[i] != 0 && dy[j] != 0)
+				xs_addprod(&ct->k, ax0[i], dy[j]);
+			if (ay0[i] != 0 && dx[j] != 0)
+				xs_addprod(&ct->k, -ay0[i], dx[j]);
 		}
-	/*
-	 * end 0 enters, end 1 leaves: the line x = lx or y = ly it crosses
-	 * there, if any, the later of the two on entry and the earlier on
-	 * leaving, x's on a tie (a corner).
-	 */
 	for (end = 0; end < 2; end++) {
-		int pick = NONE;
-
-		inx = sx != 0 && (end == 0 ? (sx > 0 ? a.x <= x[0] : a.x >= x[1]) :
-		    (sx > 0 ? b.x >= x[1] : b.x <= x[0]));
-		iny = sy != 0 && (end == 0 ? (sy > 0 ? a.y <= y[0] : a.y >= y[1]) :
-		    (sy > 0 ? b.y >= y[1] : b.y <= y[0]));
-		lx = x[(sx > 0) == (end == 1)];
-		ly = y[(sy > 0) == (end == 1)];
-		if (inx && iny) {
-			/* sign(tx - ty) = -sign(orient) sign(dx) sign(dy) */
-			int o = -orient2d(a.x, a.y, b.x, b.y, lx, ly) * sx * sy;
-
-			pick = (end == 0 ? o >= 0 : o <= 0) ? 'x' : 'y';
-		} else if (inx)
-			pick = 'x';
-		else if (iny)
-			pick = 'y';
 		/* the piece: K tQ - K tP */
-		if (pick == 'x') {
-			diff(lx, a.x, t);
+		side[end] = endside(a, b, x, y, end);
+		if (side[end] == LEFT || side[end] == RIGHT) {
+			diff(x[side[end] == RIGHT], a.x, t);
 			addxsprod(&ct->nx, end ? 1 : -1, &ct->k, t);
-			side[end] = lx == x[0] ? LEFT : RIGHT;
-		} else if (pick == 'y') {
-			diff(ly, a.y, t);
+		} else if (side[end] != NONE) {
+			diff(y[side[end] == TOP], a.y, t);
 			addxsprod(&ct->ny, end ? 1 : -1, &ct->k, t);
-			side[end] = ly == y[0] ? BOTTOM : TOP;
-		} else {
-			if (end == 1)
-				xs_addxs(&ct->n0, &ct->k, 1);
-			side[end] = NONE;
-		}
+		} else if (end == 1)
+			xs_addxs(&ct->n0, &ct->k, 1);
 	}
 	/* the crossings: entering, the walk leaves R (-1); leaving, enters it */
 	for (end = 0; end < 2; end++) {
@@ -401,4 +441,302 @@ cut_addarea(struct xsum *s, const struct universe *u, const struct cell *c,
 	    cellcoord(u->y0, u->size, c->level, c->iy), h);
 	if (frac != 0)
 		addprod3(s, frac, w, h, (double[2]){ 1, 0 });
+}
+
+/*
+ * Cut pieces: the region inside a partial cell as closed loops, the
+ * boundary of R and C, each run with the region on its left (outer loops
+ * counter-clockwise, holes clockwise).  Each edge's piece runs from where
+ * it enters the cell (a side, or its first vertex inside) to where it
+ * leaves; pieces join at the vertices inside, into chains from a side to
+ * a side, or loops of rings that lie inside.  A chain's exit joins, along
+ * the cell's boundary counter-clockwise and past its corners, the next
+ * crossing of the boundary, which must be an entry.  Crossings are
+ * ordered exactly; their points are the nearest doubles to the exact ones
+ * (to within the last bit), computed alike for the two cells beside a
+ * side, so that neighbours share them.
+ */
+static const struct piece *evpieces;
+static const double *evcell;	/* x0, x1, y0, y1 */
+
+/* The crossing of edge a -> b with the line x = l (axis 0) or y = l. */
+static void
+crossnum(struct xsum *n, struct point a, struct point b, int axis, double l,
+    double d[2])
+{
+	double da[2], db[2], dl[2];
+
+	/* x = l: y = (ay dx + dy (l - ax)) / dx; y = l: x likewise */
+	if (axis == 0) {
+		diff(b.x, a.x, d);
+		diff(b.y, a.y, db);
+		diff(l, a.x, dl);
+		da[0] = a.y, da[1] = 0;
+	} else {
+		diff(b.y, a.y, d);
+		diff(b.x, a.x, db);
+		diff(l, a.y, dl);
+		da[0] = a.x, da[1] = 0;
+	}
+	n->n = 0;
+	addprod3(n, 1, da, d, (double[2]){ 1, 0 });
+	addprod3(n, 1, db, dl, (double[2]){ 1, 0 });
+}
+
+static double
+crossing(struct point a, struct point b, int axis, double l, double lo,
+    double hi)
+{
+	struct xsum n, s;
+	double d[2], v;
+
+	xs_init(&n);
+	xs_init(&s);
+	crossnum(&n, a, b, axis, l, d);
+	addquot(&s, &n, d);
+	v = xs_round(&s);
+	xs_free(&n);
+	xs_free(&s);
+	return v < lo ? lo : v > hi ? hi : v;
+}
+
+/* Where a piece crosses its side, as a point. */
+static struct point
+crosspoint(const struct piece *p, int end, const double c[4])
+{
+	struct point q;
+	int side = p->side[end];
+
+	if (side == RIGHT || side == LEFT) {
+		q.x = c[side == RIGHT];
+		q.y = crossing(p->a, p->b, 0, q.x, c[2], c[3]);
+	} else {
+		q.y = c[2 + (side == TOP)];
+		q.x = crossing(p->a, p->b, 1, q.y, c[0], c[1]);
+	}
+	return q;
+}
+
+/* Order along the boundary: by side, then the way the walk runs. */
+static int
+cmpevent(const void *va, const void *vb)
+{
+	const struct event *ea = va, *eb = vb;
+	const struct piece *pa = &evpieces[ea->piece], *pb = &evpieces[eb->piece];
+	int sa = pa->side[ea->end], sb = pb->side[eb->end], axis, sign;
+	struct xsum na, nb, t;
+	double da[2], db[2], l;
+
+	if (sa != sb)
+		return sa < sb ? -1 : 1;
+	/* bottom, top: x = ...; right, left: y = ...; top and left backwards */
+	axis = sa == BOTTOM || sa == TOP;
+	l = sa == BOTTOM ? evcell[2] : sa == TOP ? evcell[3] :
+	    sa == LEFT ? evcell[0] : evcell[1];
+	xs_init(&na);
+	xs_init(&nb);
+	xs_init(&t);
+	crossnum(&na, pa->a, pa->b, axis, l, da);
+	crossnum(&nb, pb->a, pb->b, axis, l, db);
+	/* na / da - nb / db: (na db - nb da) / (da db) */
+	addxsprod(&t, 1, &na, db);
+	addxsprod(&t, -1, &nb, da);
+	sign = xs_sign(&t) * ((da[0] > 0) - (da[0] < 0)) *
+	    ((db[0] > 0) - (db[0] < 0));
+	xs_free(&na);
+	xs_free(&nb);
+	xs_free(&t);
+	if (sa == TOP || sa == LEFT)
+		sign = -sign;
+	if (sign != 0)
+		return sign;
+	if (ea->end != eb->end)		/* exits first: a touch stays one */
+		return ea->end > eb->end ? -1 : 1;
+	return (ea->piece > eb->piece) - (ea->piece < eb->piece);
+}
+
+static void
+addpoint(struct cutter *ct, struct point p)
+{
+	size_t first = ct->lstart;
+
+	/* a point given twice running (a touch, a corner crossed) is one */
+	if (ct->nlp > first && ct->lp[ct->nlp - 1].x == p.x &&
+	    ct->lp[ct->nlp - 1].y == p.y)
+		return;
+	if (ct->nlp == ct->lpcap) {
+		ct->lpcap = ct->lpcap ? 2 * ct->lpcap : 64;
+		ct->lp = xreallocarray(ct->lp, ct->lpcap, sizeof(*ct->lp));
+	}
+	ct->lp[ct->nlp++] = p;
+}
+
+/* Closes the loop of the points added since the last one closed. */
+static void
+endloop(struct cutter *ct)
+{
+	size_t first = ct->lstart;
+
+	if (ct->nlp - first > 1 && ct->lp[ct->nlp - 1].x == ct->lp[first].x &&
+	    ct->lp[ct->nlp - 1].y == ct->lp[first].y)
+		ct->nlp--;
+	if (ct->nll == ct->llcap) {
+		ct->llcap = ct->llcap ? 2 * ct->llcap : 16;
+		ct->ll = xreallocarray(ct->ll, ct->llcap, sizeof(*ct->ll));
+	}
+	ct->ll[ct->nll++] = ct->nlp - first;
+	ct->lstart = ct->nlp;
+}
+
+/* The piece of the edge that follows piece k's edge in its ring, as taken. */
+static size_t
+nextpiece(const struct cutter *ct, size_t n, size_t k)
+{
+	size_t e = ct->pc[k].edge, lo = 0, hi = ct->nrings, r, next;
+
+	while (hi - lo > 1) {	/* the ring: rstart[r] <= e < rstart[r + 1] */
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (ct->rstart[mid] <= e)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	r = lo;
+	if (!ct->flip[e])
+		next = e + 1 < ct->rstart[r + 1] ? e + 1 : ct->rstart[r];
+	else
+		next = e > ct->rstart[r] ? e - 1 : ct->rstart[r + 1] - 1;
+	lo = 0, hi = n;		/* the lists run in edge order */
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (ct->pc[mid].edge < next)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo < n && ct->pc[lo].edge == next ? lo : n;
+}
+
+/*
+ * The region inside cell c as loops (see above): their points one after
+ * another in *pts, and in *len the number of each one's; returns the
+ * number of loops, or (size_t)-1 when the rings do not close round the
+ * cell as they must (rings that cross).  The arrays are the cutter's,
+ * until the next call.
+ */
+size_t
+cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
+    const size_t **len)
+{
+	double x[2], y[2], *box = ct->box;
+	size_t n, k, m = 0, start, cur, j, q;
+	int level = c->level, s;
+
+	descend(ct, level, c->ix, c->iy);
+	n = ct->n[level];
+	ct->nlp = ct->nll = ct->lstart = 0;
+	*pts = NULL;
+	*len = NULL;
+	x[0] = cellcoord(ct->u.x0, ct->u.size, level, c->ix);
+	x[1] = cellcoord(ct->u.x0, ct->u.size, level, c->ix + 1);
+	y[0] = cellcoord(ct->u.y0, ct->u.size, level, c->iy);
+	y[1] = cellcoord(ct->u.y0, ct->u.size, level, c->iy + 1);
+	box[0] = x[0], box[1] = x[1], box[2] = y[0], box[3] = y[1];
+	if (n > ct->pccap) {
+		ct->pccap = n + n / 2;
+		ct->pc = xreallocarray(ct->pc, ct->pccap, sizeof(*ct->pc));
+		ct->ev = xreallocarray(ct->ev, 2 * ct->pccap, sizeof(*ct->ev));
+	}
+	for (k = 0; k < n; k++) {
+		struct piece *p = &ct->pc[k];
+		struct point a, b;
+		int end;
+
+		p->edge = split_edge(ct->sp, level, k, &a, &b);
+		p->a = ct->flip[p->edge] ? b : a;
+		p->b = ct->flip[p->edge] ? a : b;
+		p->used = 0;
+		for (end = 0; end < 2; end++) {
+			p->side[end] = endside(p->a, p->b, x, y, end);
+			if (p->side[end] == NONE)
+				p->p[end] = end ? p->b : p->a;
+			else {
+				p->p[end] = crosspoint(p, end, box);
+				ct->ev[m].piece = k;
+				ct->ev[m++].end = end;
+			}
+		}
+	}
+	evpieces = ct->pc;
+	evcell = box;
+	if (m > 0)
+		qsort(ct->ev, m, sizeof(*ct->ev), cmpevent);
+	/* from each exit along the boundary to the next entry, and on */
+	for (start = 0; start < m; start++) {
+		if (ct->ev[start].end != 1 || ct->pc[ct->ev[start].piece].used)
+			continue;
+		cur = start;
+		do {
+			const struct piece *p = &ct->pc[ct->ev[cur].piece];
+			int sc = p->side[1], sj;
+
+			addpoint(ct, p->p[1]);
+			j = (cur + 1) % m;
+			if (ct->ev[j].end != 0)
+				return (size_t)-1;
+			q = ct->ev[j].piece;
+			sj = ct->pc[q].side[0];
+			/* the corners passed: the one after each side left */
+			for (s = sc; j > cur ? s < sj : s < sj + 4; s++) {
+				struct point corner;
+
+				corner.x = x[(s % 4) == BOTTOM || (s % 4) == RIGHT];
+				corner.y = y[(s % 4) == RIGHT || (s % 4) == TOP];
+				addpoint(ct, corner);
+			}
+			addpoint(ct, ct->pc[q].p[0]);
+			while (ct->pc[q].side[1] == NONE) {
+				ct->pc[q].used = 1;
+				addpoint(ct, ct->pc[q].b);
+				if ((q = nextpiece(ct, n, q)) == n ||
+				    ct->pc[q].side[0] != NONE)
+					return (size_t)-1;
+			}
+			ct->pc[q].used = 1;
+			for (cur = 0; cur < m; cur++)
+				if (ct->ev[cur].piece == q && ct->ev[cur].end == 1)
+					break;
+		} while (cur != start && cur < m);
+		if (cur != start)
+			return (size_t)-1;
+		endloop(ct);
+	}
+	if (m == 0 && ct->inside[level]) {
+		struct point sq[4] = { { x[0], y[0] }, { x[1], y[0] },
+		    { x[1], y[1] }, { x[0], y[1] } };
+
+		for (s = 0; s < 4; s++)
+			addpoint(ct, sq[s]);
+		endloop(ct);
+	}
+	/* rings that lie inside the cell */
+	for (k = 0; k < n; k++) {
+		if (ct->pc[k].used)
+			continue;
+		if (ct->pc[k].side[0] != NONE || ct->pc[k].side[1] != NONE)
+			return (size_t)-1;
+		q = k;
+		do {
+			ct->pc[q].used = 1;
+			addpoint(ct, ct->pc[q].b);
+			if ((q = nextpiece(ct, n, q)) == n)
+				return (size_t)-1;
+		} while (q != k);
+		endloop(ct);
+	}
+	*pts = ct->lp;
+	*len = ct->ll;
+	return ct->nll;
 }

@@ -373,7 +373,10 @@ void	 mo_result(const struct moments *, double *, double *, double *);
  * about 150 bits (see qtleaves(1)).  A ring whose kind and direction
  * disagree (an outer ring clockwise) has its edges taken backwards.
  * cut_addarea adds a fraction times a cell's area exactly, the area of
- * the cell between its corners as qtree(5) defines them.
+ * the cell between its corners as qtree(5) defines them.  cut_loops
+ * gives the region inside a cell as loops with the region on their left
+ * (outer loops counter-clockwise, holes clockwise), their crossings of
+ * the cell's sides rounded to doubles alike in the cells on either side.
  */
 struct cutter *cut_new(const struct universe *);
 void	 cut_free(struct cutter *);
@@ -381,5 +384,7 @@ void	 cut_addring(struct cutter *, const struct ring *);
 char	 cut_cell(struct cutter *, const struct cell *, double *);
 void	 cut_addarea(struct xsum *, const struct universe *,
 	    const struct cell *, double);
+size_t	 cut_loops(struct cutter *, const struct cell *,
+	    const struct point **, const size_t **);
 
 #endif

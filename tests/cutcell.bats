@@ -196,3 +196,64 @@ for a in sys.argv[1:]:
 	run -1 --separate-stderr qtstats n.qt
 	[ "$stderr" = "qtstats: n.qt:3: area fraction is not a real from 0 to 1: -0.5" ]
 }
+
+@test "-p: the triangle's pieces, by hand" {
+	# the hypotenuse x + y = 2 runs along the diagonals of the south-east
+	# and north-west quadrants: each keeps the triangle below it, walked
+	# from where the hypotenuse leaves it, counter-clockwise
+	printf '0 0\n2 0\n0 2\n' | polyread -l 1 | qtsplit | qtleaves -p -f wkt -c FEP > got
+	printf '%s\t%s\t%s\t%s\t%s\t%s\n' \
+	    0 1 F 1 'MULTIPOLYGON (((0 0, 1 0, 1 1, 0 1, 0 0)))' 1 \
+	    1 1 P 2 'MULTIPOLYGON (((1 1, 1 0, 2 0, 1 1)))' 0.5 \
+	    2 1 P 3 'MULTIPOLYGON (((0 2, 0 1, 1 1, 0 2)))' 0.5 \
+	    3 1 E 4 'MULTIPOLYGON EMPTY' 0 > want
+	diff -u want got
+}
+
+@test "-p: a hole across quadrants cuts them, a hole inside one is its inner ring" {
+	# [0,4]^2 less [1,3] x [1,2.5]: the south-west quadrant keeps an L
+	printf '0 0\n4 0\n4 4\n0 4\n\n1 1\n3 1\n3 2.5\n1 2.5\n' | polyread |
+	    qtsplit -l 1 | qtleaves -p -f wkt | head -1 | cut -f 5 > got
+	echo 'MULTIPOLYGON (((1 2, 0 2, 0 0, 2 0, 2 1, 1 1, 1 2)))' > want
+	diff -u want got
+	# less [0.5,1.5]^2 only: the south-west quadrant is a square with a
+	# square hole, clockwise
+	printf '0 0\n4 0\n4 4\n0 4\n\n0.5 0.5\n1.5 0.5\n1.5 1.5\n0.5 1.5\n' |
+	    polyread | qtsplit -l 1 | qtleaves -p -f wkt | head -1 | cut -f 5 > got
+	echo 'MULTIPOLYGON (((0 0, 2 0, 2 2, 0 2, 0 0), (1.5 1.5, 1.5 0.5, 0.5 0.5, 0.5 1.5, 1.5 1.5)))' > want
+	diff -u want got
+}
+
+@test "-p: every sample's pieces have the region's area, its vertices, and meet across sides" {
+	awk -v shape=star -v n=300 -v m=0 -f "$TOP/tools/genpoly.awk" > star.xy
+	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt \
+	    "$SAMPLES"/*.poly "$SAMPLES"/*.geojson "$FIXTURES"/*.xy star.xy; do
+		polyread "$f" > p.qt
+		for l in 1 3 5; do
+			qtsplit -l $l p.qt | qtleaves -p -f wkt -c FEP > w.txt
+			run -0 python3 "$TOP/tests/piececheck.py" p.qt w.txt
+		done
+	done
+}
+
+@test "-p: GeoJSON pieces are MultiPolygons, -p needs a GIS format" {
+	printf '0 0\n2 0\n0 2\n' | polyread -l 1 | qtsplit > t.qt
+	run -0 bash -c 'qtleaves -p -f geojson t.qt | grep -o "\"type\":\"MultiPolygon\"" | wc -l'
+	[ "$output" = 3 ]
+	run -2 --separate-stderr qtleaves -p t.qt
+	[ "$stderr" = "qtleaves: -p: cut pieces are written as geojson or wkt only" ]
+}
+
+@test "qtleaves(1): the -a examples print what the page says" {
+	run -0 bash -c "printf '0 0\n2 0\n0 2\n' | polyread -l 1 | qtsplit | qtleaves -a | grep '^leaf'"
+	[ "${#lines[@]}" = 3 ]
+	for l in "${lines[@]}"; do
+		grep -qxF "$l" "$TOP/man/qtleaves.1"
+	done
+	# the amoeba's area is 65.505 (qtstats's polygon_area, exact);
+	# awk's running sum strays in the last digits
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | qtleaves -a |
+	    awk '\''$1 == "leaf" { a += $11 * $8 * $8 } END { printf "%.17g\n", a }'\'
+	awk -v a="$output" 'BEGIN { d = a - 65.505; exit !(d < 1e-12 && -d < 1e-12) }'
+	grep -qxF "$output" "$TOP/man/qtleaves.1"
+}

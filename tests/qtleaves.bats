@@ -86,7 +86,7 @@ amoeba() {
 		[ "$stderr" = "$p: -c: no classes given (a word of F, E and P)" ]
 	done
 	run -2 --separate-stderr qtleaves -x
-	[ "${stderr##*$'\n'}" = "usage: qtleaves [-ahnv] [-c classes] [-f format] [file]" ]
+	[ "${stderr##*$'\n'}" = "usage: qtleaves [-ahnpv] [-c classes] [-f format] [file]" ]
 	run -2 --separate-stderr qtleaves a b
 }
 

@@ -61,6 +61,7 @@ cases() {
 		echo "$b.qtleaves-v|polyread $f | qtsplit -l 6 | qtleaves -v 2>&1 >/dev/null"
 		echo "$b.qtleaves-a|polyread $f | qtsplit -l 5 | qtleaves -a -c FEP"
 		echo "$b.qtleaves-a-wkt|polyread $f | qtsplit -l 3 | qtleaves -a -f wkt"
+		echo "$b.qtleaves-p|polyread $f | qtsplit -l 4 | qtleaves -p -f wkt -c FEP"
 		echo "$b.qtstats-a|polyread $f | qtsplit -l 6 | qtleaves -a | qtstats"
 		echo "$b.qtstats|polyread $f | qtsplit -l 6 | qtstats -l"
 		echo "$b.qtstats-mesh|polyread $f | qtsplit -l 5 | qtleaves -n | qtstats"

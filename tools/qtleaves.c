@@ -27,7 +27,7 @@
 static void
 usage(int help)
 {
-	usageexit(help, "usage: qtleaves [-ahnv] [-c classes] [-f format] "
+	usageexit(help, "usage: qtleaves [-ahnpv] [-c classes] [-f format] "
 	    "[file]\n");
 }
 
@@ -64,17 +64,98 @@ meshleaf(const struct cell *c, int kept, unsigned long long id)
 
 enum format { QTREE, GEOJSON, WKT };
 
+/* A leaf's shape for GIS tools: loops of points, outer ones first. */
+struct shape {
+	const struct point *v;
+	const size_t	*len;
+	size_t		 n;
+};
+
+static int
+clockwise(const struct point *v, size_t n)
+{
+	struct xsum a2;
+	size_t i;
+	int sign;
+
+	xs_init(&a2);
+	for (i = 0; i < n; i++) {
+		xs_addprod(&a2, v[i].x, v[(i + 1) % n].y);
+		xs_addprod(&a2, -v[(i + 1) % n].x, v[i].y);
+	}
+	sign = xs_sign(&a2);
+	xs_free(&a2);
+	return sign < 0;
+}
+
+static void
+putloop(enum format format, const struct point *v, size_t n, int first)
+{
+	char x[32], y[32];
+	size_t i;
+
+	printf(first ? "" : format == WKT ? ", " : ",");
+	printf(format == WKT ? "(" : "[");
+	for (i = 0; i <= n; i++) {
+		fmtreal(x, v[i % n].x);
+		fmtreal(y, v[i % n].y);
+		printf(format == WKT ? "%s%s %s" : "%s[%s,%s]",
+		    i == 0 ? "" : format == WKT ? ", " : ",", x, y);
+	}
+	printf(format == WKT ? ")" : "]");
+}
+
+/*
+ * The shape as a MultiPolygon: each outer loop (counter-clockwise) with
+ * the holes (clockwise) whose first point it contains.
+ */
+static void
+putmulti(enum format format, const struct shape *sh)
+{
+	size_t *off = xreallocarray(NULL, sh->n + 1, sizeof(*off));
+	size_t i, j, npoly = 0;
+
+	off[0] = 0;
+	for (i = 0; i < sh->n; i++)
+		off[i + 1] = off[i] + sh->len[i];
+	if (sh->n == 0 && format == WKT) {
+		printf("MULTIPOLYGON EMPTY");
+		free(off);
+		return;
+	}
+	printf(format == WKT ? "MULTIPOLYGON (" :
+	    "{\"type\":\"MultiPolygon\",\"coordinates\":[");
+	for (i = 0; i < sh->n; i++) {
+		const struct point *v = sh->v + off[i];
+
+		if (clockwise(v, sh->len[i]))
+			continue;
+		printf(npoly++ == 0 ? "" : ",");
+		printf(format == WKT ? "(" : "[");
+		putloop(format, v, sh->len[i], 1);
+		for (j = 0; j < sh->n; j++) {
+			const struct point *h = sh->v + off[j];
+
+			if (clockwise(h, sh->len[j]) &&
+			    ring_contains(v, sh->len[i], h[0], h[1]))
+				putloop(format, h, sh->len[j], 0);
+		}
+		printf(format == WKT ? ")" : "]");
+	}
+	printf(format == WKT ? ")" : "]}");
+	free(off);
+}
+
 /*
  * A kept leaf for GIS tools: its square, counter-clockwise from the lower
- * left and closed, with its path, level, class and element number.
+ * left and closed, or with -p its shape, with its path, level, class,
+ * element number and, with -a, its area fraction.
  */
 static void
 putgis(enum format format, const struct universe *u, const struct cell *c,
-    unsigned long long id, double frac)
+    unsigned long long id, double frac, const struct shape *sh)
 {
-	char f[32];
-
-	char x[2][32], y[2][32];
+	char f[32], x[2][32], y[2][32];
 	int i;
 
 	fmtreal(f, frac);
@@ -82,24 +163,29 @@ putgis(enum format format, const struct universe *u, const struct cell *c,
 	fmtreal(y[0], c->y);
 	fmtreal(x[1], u->x0 + (double)(c->ix + 1) * c->size);
 	fmtreal(y[1], u->y0 + (double)(c->iy + 1) * c->size);
-	if (format == WKT) {
-		printf("%s\t%d\t%c\t%llu\tPOLYGON ((", c->path, c->level,
-		    c->class, id);
+	if (format == WKT)
+		printf("%s\t%d\t%c\t%llu\t", c->path, c->level, c->class, id);
+	else
+		printf("%s{\"type\":\"Feature\",\"properties\":{\"path\":"
+		    "\"%s\",\"level\":%d,\"class\":\"%c\",\"id\":%llu%s%s},"
+		    "\"geometry\":", id > 1 ? ",\n" : "", c->path, c->level,
+		    c->class, id, frac >= 0 ? ",\"frac\":" : "",
+		    frac >= 0 ? f : "");
+	if (sh != NULL)
+		putmulti(format, sh);
+	else {
+		printf(format == WKT ? "POLYGON ((" :
+		    "{\"type\":\"Polygon\",\"coordinates\":[[");
 		for (i = 0; i < 5; i++)
-			printf("%s%s %s", i > 0 ? ", " : "",
+			printf(format == WKT ? "%s%s %s" : "%s[%s,%s]",
+			    i > 0 ? format == WKT ? ", " : "," : "",
 			    x[(i + 1) / 2 % 2], y[i / 2 % 2]);
-		printf("))%s%s\n", frac >= 0 ? "\t" : "", frac >= 0 ? f : "");
-		return;
+		printf(format == WKT ? "))" : "]]}");
 	}
-	printf("%s{\"type\":\"Feature\",\"properties\":{\"path\":\"%s\","
-	    "\"level\":%d,\"class\":\"%c\",\"id\":%llu%s%s},\"geometry\":"
-	    "{\"type\":\"Polygon\",\"coordinates\":[[", id > 1 ? ",\n" : "",
-	    c->path, c->level, c->class, id, frac >= 0 ? ",\"frac\":" : "",
-	    frac >= 0 ? f : "");
-	for (i = 0; i < 5; i++)
-		printf("%s[%s,%s]", i > 0 ? "," : "", x[(i + 1) / 2 % 2],
-		    y[i / 2 % 2]);
-	printf("]]}}");
+	if (format == WKT)
+		printf("%s%s\n", frac >= 0 ? "\t" : "", frac >= 0 ? f : "");
+	else
+		printf("}");
 }
 
 static enum format
@@ -125,12 +211,13 @@ main(int argc, char *argv[])
 	struct universe u = { 0, 0, 1 };
 	enum format format = QTREE;
 	unsigned keep = CLASSBIT('F') | CLASSBIT('P');
-	int ch, kept, aflag = 0, nflag = 0, verbose = 0;
+	int ch, kept, aflag = 0, nflag = 0, pflag = 0, verbose = 0;
+	struct shape shape, *sh;
 	double frac;
 	char class;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "ac:f:nvh")) != -1)
+	while ((ch = getopt(argc, argv, "ac:f:npvh")) != -1)
 		switch (ch) {
 		case 'a':
 			aflag = 1;
@@ -144,6 +231,9 @@ main(int argc, char *argv[])
 		case 'n':
 			nflag = 1;
 			break;
+		case 'p':
+			pflag = aflag = 1;
+			break;
 		case 'v':
 			verbose = 1;
 			break;
@@ -156,6 +246,8 @@ main(int argc, char *argv[])
 		usage(0);
 	if (nflag && format != QTREE)
 		die(2, "-n: a mesh is written in the qtree format only");
+	if (pflag && format == QTREE)
+		die(2, "-p: cut pieces are written as geojson or wkt only");
 	if (nflag)
 		corners = corners_new(0);
 
@@ -203,8 +295,19 @@ main(int argc, char *argv[])
 				qt_cellfrac(&rec.c, ++id, frac);
 			else if (kept && format == QTREE)
 				qt_cell(&rec.c, ++id);
-			else if (kept)
-				putgis(format, &u, &rec.c, ++id, frac);
+			else if (kept) {
+				sh = NULL;
+				if (pflag) {
+					shape.n = cut_loops(cutter, &rec.c,
+					    &shape.v, &shape.len);
+					if (shape.n == (size_t)-1)
+						qt_fail(r, "leaf %s: the rings do "
+						    "not close round it",
+						    rec.c.path);
+					sh = &shape;
+				}
+				putgis(format, &u, &rec.c, ++id, frac, sh);
+			}
 			if (nflag)
 				meshleaf(&rec.c, kept, id);
 			break;
