@@ -688,7 +688,8 @@ vrec(struct qtreader *r, int isa)
 	if (isa) {
 		if (!(r->flags & QT_ARCS))
 			qt_fail(r, "ring %ld has an arc (a record), which %s "
-			    "does not handle", g->id, progname);
+			    "does not handle with these options", g->id,
+			    progname);
 		if (g->n == 0)
 			qt_fail(r, "ring %ld starts with an a record (a ring "
 			    "starts at a vertex)", g->id);

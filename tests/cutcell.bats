@@ -257,3 +257,16 @@ for a in sys.argv[1:]:
 	awk -v a="$output" 'BEGIN { d = a - 65.505; exit !(d < 1e-12 && -d < 1e-12) }'
 	grep -qxF "$output" "$TOP/man/qtleaves.1"
 }
+
+@test "-a and -p refuse rings with arcs, which their clipping does not follow" {
+	# the plate's hole is two arcs; its straight chords would give the
+	# leaves beside the hole fractions of 1
+	qtsplit -l 2 "$TOP/samples/plate-hole.qt" > plate.qt
+	run -1 --separate-stderr qtleaves -a plate.qt
+	[ "$stderr" = "qtleaves: plate.qt:11: ring 2 has an arc (a record), which qtleaves does not handle with these options" ]
+	[ -z "$output" ]
+	run -1 --separate-stderr qtleaves -p -f wkt plate.qt
+	[ "${stderr#*: }" = "plate.qt:11: ring 2 has an arc (a record), which qtleaves does not handle with these options" ]
+	# without -a the leaves pass as ever
+	run -0 qtleaves plate.qt
+}

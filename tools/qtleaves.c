@@ -251,8 +251,9 @@ main(int argc, char *argv[])
 	if (nflag)
 		corners = corners_new(0);
 
+	/* Cut cells are clipped by straight edges only (lib/cut.c). */
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
-	    QT_ARCS | (verbose ? QT_VERBOSE : 0));
+	    (aflag ? 0 : QT_ARCS) | (verbose ? QT_VERBOSE : 0));
 	if (format == QTREE)
 		qt_header();
 	else if (format == GEOJSON)
