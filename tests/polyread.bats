@@ -188,6 +188,18 @@ ring 3 outer 4" ]
 	[ "$stderr" = "polyread: bad.poly:10: hole point lies inside the region its rings bound" ]
 }
 
+@test "poly: a hole point level with a vertex of the shell is outside the region" {
+	# by hand: the ray from the hole point (3,5) to +x crosses the hole's
+	# edge (4,4)-(3,6) at x = 3.5, and runs through the shell's vertex
+	# (12,5), which counts as the lower end of (12,5)-(10,10) only: two
+	# crossings, so the point is outside the region, in the hole
+	printf '8 2 0 0\n1 0 0\n2 10 0\n3 12 5\n4 10 10\n5 0 10\n6 2 4\n7 4 4\n8 3 6\n' > h.poly
+	printf '8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 1\n6 6 7\n7 7 8\n8 8 6\n1\n1 3 5\n' >> h.poly
+	run -0 polyread h.poly
+	[ "${lines[2]}" = "ring 1 outer 5" ]
+	[ "${lines[8]}" = "ring 2 hole 3" ]
+}
+
 @test "formats are detected, and -f forces one" {
 	printf '0 0\n1 0\n0 1\n' > t.txt
 	run -0 polyread t.txt
