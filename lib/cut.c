@@ -517,6 +517,37 @@ crosspoint(const struct piece *p, int end, const double c[4])
 	return q;
 }
 
+/*
+ * Crossings at one point of a side, in the order in which a ray from the
+ * point, turning clockwise from the side behind the walk to the side ahead
+ * (through the cell), meets their pieces (an exit's taken from the point
+ * back along it).  The region lies clockwise of each exit and
+ * counter-clockwise of each entry, so an exit is followed by the entry
+ * that closes the region's corner there: with a ring that touches a side
+ * from inside, its own entry when the touching part is region, the walk
+ * round the cell first when it is not (a hole touching the side).
+ */
+static int
+cmpturn(const struct piece *pa, int enda, const struct piece *pb, int endb)
+{
+	static const double one[2] = { 1, 0 };
+	double ax[2], ay[2], bx[2], by[2];
+	struct xsum t;
+	int sign;
+
+	diff(pa->b.x, pa->a.x, ax);
+	diff(pa->b.y, pa->a.y, ay);
+	diff(pb->b.x, pb->a.x, bx);
+	diff(pb->b.y, pb->a.y, by);
+	xs_init(&t);
+	addprod3(&t, 1, ax, by, one);
+	addprod3(&t, -1, ay, bx, one);
+	sign = xs_sign(&t);
+	xs_free(&t);
+	/* b clockwise of a: a first; an exit's direction is its reverse */
+	return enda == endb ? sign : -sign;
+}
+
 /* Order along the boundary: by side, then the way the walk runs. */
 static int
 cmpevent(const void *va, const void *vb)
@@ -550,7 +581,9 @@ cmpevent(const void *va, const void *vb)
 		sign = -sign;
 	if (sign != 0)
 		return sign;
-	if (ea->end != eb->end)		/* exits first: a touch stays one */
+	if ((sign = cmpturn(pa, ea->end, pb, eb->end)) != 0)
+		return sign;
+	if (ea->end != eb->end)
 		return ea->end > eb->end ? -1 : 1;
 	return (ea->piece > eb->piece) - (ea->piece < eb->piece);
 }
@@ -571,6 +604,94 @@ addpoint(struct cutter *ct, struct point p)
 	ct->lp[ct->nlp++] = p;
 }
 
+static void
+addlen(struct cutter *ct, size_t len)
+{
+	if (ct->nll == ct->llcap) {
+		ct->llcap = ct->llcap ? 2 * ct->llcap : 16;
+		ct->ll = xreallocarray(ct->ll, ct->llcap, sizeof(*ct->ll));
+	}
+	ct->ll[ct->nll++] = len;
+}
+
+static int
+cmppoint(const void *va, const void *vb)
+{
+	const struct point *a = va, *b = vb;
+
+	if (a->x != b->x)
+		return a->x < b->x ? -1 : 1;
+	return (a->y > b->y) - (a->y < b->y);
+}
+
+/*
+ * A loop that passes a point twice (a hole touching the cell's side or
+ * its shell from inside) is split there into loops that do not, as
+ * simple features want them: the part between the two visits becomes a
+ * loop of its own, beginning at the point.  Each part keeps the turning
+ * of the walk, so a touching hole comes out clockwise.
+ */
+static void
+splitpinches(struct cutter *ct, size_t first)
+{
+	size_t k = ct->nlp - first, i, j, ndup = 0, top = 0, out = first;
+	struct point *v = ct->lp + first, *sorted, *dup, *stack;
+	size_t *at;
+
+	if (k < 6) {		/* two triangles and the shared point twice */
+		addlen(ct, k);
+		return;
+	}
+	sorted = xreallocarray(NULL, k, sizeof(*sorted));
+	memcpy(sorted, v, k * sizeof(*v));
+	qsort(sorted, k, sizeof(*sorted), cmppoint);
+	dup = sorted;		/* the points given twice, in place */
+	for (i = 1; i < k; i++)
+		if (cmppoint(&sorted[i - 1], &sorted[i]) == 0 &&
+		    (ndup == 0 || cmppoint(&dup[ndup - 1], &sorted[i]) != 0))
+			dup[ndup++] = sorted[i];
+	if (ndup == 0) {
+		free(sorted);
+		addlen(ct, k);
+		return;
+	}
+	stack = xreallocarray(NULL, k, sizeof(*stack));
+	at = xreallocarray(NULL, ndup, sizeof(*at));
+	for (i = 0; i < ndup; i++)
+		at[i] = (size_t)-1;
+	/* the loops cut off are written over the front of v as they close */
+	for (i = 0; i < k; i++) {
+		struct point *d = bsearch(&v[i], dup, ndup, sizeof(*dup),
+		    cmppoint);
+		size_t id = d != NULL ? (size_t)(d - dup) : (size_t)-1;
+
+		if (id != (size_t)-1 && at[id] != (size_t)-1) {
+			size_t from = at[id];
+
+			for (j = from; j < top; j++) {
+				struct point *e = bsearch(&stack[j], dup,
+				    ndup, sizeof(*dup), cmppoint);
+
+				if (j > from && e != NULL)
+					at[e - dup] = (size_t)-1;
+				ct->lp[out + j - from] = stack[j];
+			}
+			addlen(ct, top - from);
+			out += top - from;
+			top = from + 1;
+			continue;
+		}
+		if (id != (size_t)-1)
+			at[id] = top;
+		stack[top++] = v[i];
+	}
+	memcpy(ct->lp + out, stack, top * sizeof(*stack));
+	addlen(ct, top);
+	free(at);
+	free(stack);
+	free(sorted);
+}
+
 /* Closes the loop of the points added since the last one closed. */
 static void
 endloop(struct cutter *ct)
@@ -580,11 +701,7 @@ endloop(struct cutter *ct)
 	if (ct->nlp - first > 1 && ct->lp[ct->nlp - 1].x == ct->lp[first].x &&
 	    ct->lp[ct->nlp - 1].y == ct->lp[first].y)
 		ct->nlp--;
-	if (ct->nll == ct->llcap) {
-		ct->llcap = ct->llcap ? 2 * ct->llcap : 16;
-		ct->ll = xreallocarray(ct->ll, ct->llcap, sizeof(*ct->ll));
-	}
-	ct->ll[ct->nll++] = ct->nlp - first;
+	splitpinches(ct, first);
 	ct->lstart = ct->nlp;
 }
 

@@ -224,6 +224,28 @@ for a in sys.argv[1:]:
 	diff -u want got
 }
 
+@test "-p: a hole touching its cell's side from inside is a hole of the cell" {
+	# by hand: the triangle hole (4,2) (2,3) (2,1), area 2, touches the
+	# side x = 4 of the south-west quadrant [0,4]^2 at (4,2) only: that
+	# quadrant's piece is its square less the triangle, (16 - 2) / 16 of
+	# it, written as a square and a hole that meet at (4,2), the walk
+	# round the cell starting where the hole touches
+	printf '0 0\n8 0\n8 8\n0 8\n\n4 2\n2 3\n2 1\n' | polyread > t.qt
+	qtsplit -l 1 t.qt | qtleaves -p -f wkt -c FEP > w.txt
+	printf '0\t1\tP\t1\tMULTIPOLYGON (((4 2, 4 4, 0 4, 0 0, 4 0, 4 2), (4 2, 2 1, 2 3, 4 2)))\t0.875\n' > want
+	head -1 w.txt | diff -u want -
+	run -0 python3 "$TOP/tests/piececheck.py" t.qt w.txt
+	# the hole on the left side instead, and on the bottom
+	printf '0 0\n8 0\n8 8\n0 8\n\n0 2\n2 1\n2 3\n' | polyread > t.qt
+	qtsplit -l 1 t.qt | qtleaves -p -f wkt -c FEP > w.txt
+	run -0 python3 "$TOP/tests/piececheck.py" t.qt w.txt
+	[ "$(head -1 w.txt | cut -f 6)" = 0.875 ]
+	printf '0 0\n8 0\n8 8\n0 8\n\n2 0\n3 2\n1 2\n' | polyread > t.qt
+	qtsplit -l 1 t.qt | qtleaves -p -f wkt -c FEP > w.txt
+	run -0 python3 "$TOP/tests/piececheck.py" t.qt w.txt
+	[ "$(head -1 w.txt | cut -f 6)" = 0.875 ]
+}
+
 @test "-p: every sample's pieces have the region's area, its vertices, and meet across sides" {
 	awk -v shape=star -v n=300 -v m=0 -f "$TOP/tools/genpoly.awk" > star.xy
 	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt \
