@@ -1064,35 +1064,24 @@ fastdone(struct qtreader *r, struct qtrec *rec, char *line, size_t n)
 }
 
 /*
- * Returns the next record, QT_EOF after a valid end record.  Every defect
- * of the stream is reported here with the file and line, and exits 1.
+ * qt_read's long way: a line at a time, each a cell taken at once when it
+ * is one as the writers spell it, or a record parsed field by field.
  */
-enum qtkind
-qt_read(struct qtreader *r, struct qtrec *rec)
+static NOINLINE enum qtkind
+readrecord(struct qtreader *r, struct qtrec *rec)
 {
 	enum qtkind kind;
 	char *line;
 	size_t n = 0;
 
 	for (;;) {
-		/*
-		 * A cell straight from the buffer when it holds more than the
-		 * longest the writers write, its newline found as it is
-		 * checked; else, or when it is not one, the line first.
-		 */
-		line = r->buf + r->pos;
-		if (r->state == IN_BODY && r->end - r->pos > FASTROOM &&
-		    (n = fastcell(r, rec, line, r->buf + r->end, 0)) > 0) {
-			r->pos += n + 1;
-			r->lineno++;
-			return fastdone(r, rec, line, n);
-		}
 		if ((line = readline(r, &n)) == NULL) {
 			atend(r);
 			return QT_EOF;
 		}
 		r->lineno++;
 		if (r->state == IN_BODY && n > 5 &&
+		    (line[0] == 'l' || line[0] == 'n') &&	/* not a v */
 		    fastcell(r, rec, line, line + n, 1) > 0)
 			return fastdone(r, rec, line, n);
 		checkline(r, line, n);
@@ -1116,6 +1105,28 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 			return kind;
 		}
 	}
+}
+
+/*
+ * Returns the next record, QT_EOF after a valid end record.  Every defect
+ * of the stream is reported here with the file and line, and exits 1.
+ * The common record, a cell as the writers spell it, is checked straight
+ * in the buffer when it holds more than the longest such cell, its
+ * newline found as it is checked; anything else takes the long way.
+ */
+enum qtkind
+qt_read(struct qtreader *r, struct qtrec *rec)
+{
+	char *line = r->buf + r->pos;
+	size_t n;
+
+	if (r->state == IN_BODY && r->end - r->pos > FASTROOM &&
+	    (n = fastcell(r, rec, line, r->buf + r->end, 0)) > 0) {
+		r->pos += n + 1;
+		r->lineno++;
+		return fastdone(r, rec, line, n);
+	}
+	return readrecord(r, rec);
 }
 
 /*
