@@ -150,7 +150,7 @@ corners_at(struct corners *t, uint64_t x, uint64_t y)
 }
 
 /* A new vertex at (x, y), which slot k is free for unless the table is full. */
-static OUTOFLINE uint32_t
+static NOINLINE uint32_t
 newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y)
 {
 	if (2 * (t->n + 1) > t->cap) {

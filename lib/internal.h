@@ -5,12 +5,14 @@
 /*
  * A rarely taken path kept out of line, so that the common one it leaves
  * needs no registers saved (GCC and Clang inline a static function called
- * once otherwise).
+ * once otherwise); NOINLINE for one that is not rare, only longer.
  */
 #if defined(__GNUC__)
 #define OUTOFLINE	__attribute__((noinline, cold))
+#define NOINLINE	__attribute__((noinline))
 #else
 #define OUTOFLINE
+#define NOINLINE
 #endif
 
 /* fmt.c, parse.c: the 128-bit product of two 64-bit numbers. */

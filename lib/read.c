@@ -21,6 +21,13 @@ enum { BEFORE_HEADER, IN_BODY, AFTER_END };
 
 #define NFIELD	64	/* fields of a record, an elem's at most */
 #define MAXLINE	(1 << 20)	/* bytes of a line, its newline excluded */
+/*
+ * qt_read checks a cell straight in its buffer when this much input is
+ * there, more than the longest cell the writers write (a path of 50
+ * digits, two integers of 16, three reals of 24 bytes, an element number
+ * of 18): the few bytes it reads ahead of a check stay within the input.
+ */
+#define FASTROOM	256
 
 struct buf {
 	char	*s;
@@ -435,34 +442,44 @@ fastlevel(const char *p, int level)
 	return p + 2;
 }
 
-/* An element number as the writers spell it, ending the line. */
-static inline int
-fastid(const char *p, const char *end, unsigned long long *id)
+/*
+ * An element number as the writers spell it; returns where it stops, the
+ * line's end when the line is well-formed.
+ */
+static inline const char *
+fastid(const char *p, unsigned long long *id)
 {
 	unsigned long long v = 0;
+	const char *start = p;
 	unsigned d;
 
-	if (p == end || *p == '0' || end - p > 18)
-		return 0;
-	for (; p < end; p++) {
-		if ((d = (unsigned char)*p - '0') > 9)
-			return 0;
+	if (*p == '0')
+		return NULL;
+	for (; (d = (unsigned char)*p - '0') <= 9; p++) {
+		if (p - start == 18)
+			return NULL;
 		v = v * 10 + d;
 	}
+	if (p == start)
+		return NULL;
 	*id = v;
-	return 1;
+	return p;
 }
 
 /*
  * The common record, a cell spelled as the writers spell it, checked in
- * one pass over its bytes.  Returns 0 for anything else, and the record
- * takes the long way.
+ * one pass over its bytes from line: a line of its own that ends at
+ * limit (whole), or the next line of the input, which must end in a
+ * newline before limit.  A NUL stands at limit.  Returns the length of
+ * the line, cut at its end, or 0 for anything else, and the record takes
+ * the long way.
  */
-static int
-fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
+static size_t
+fastcell(struct qtreader *r, struct qtrec *rec, char *line,
+    const char *limit, int whole)
 {
 	struct cell *c = &rec->c;
-	const char *p = line + 5, *end = line + len, *path = p;
+	const char *p = line + 5, *path = p;
 	const struct coordtext *kx, *ky, *ks;
 	uint64_t ix, iy;
 	int level, common;
@@ -477,7 +494,7 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 		return 0;
 	if (!r->haveuniverse || r->vleft > 0)
 		return 0;
-	if ((level = fastpath(r, &p, end, &ix, &iy, &common)) < 0 ||
+	if ((level = fastpath(r, &p, limit, &ix, &iy, &common)) < 0 ||
 	    level > r->ulevels)
 		return 0;
 	kx = celltext(&r->text, level, 0, ix);
@@ -501,13 +518,11 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 	*t++ = ' ';
 	memcpy(t, ks->text, sizeof(ks->text));
 	t += ks->len;
-	*t = rec->kind == QT_NODE ? '\0' : ' ';
+	*t = ' ';
 	n = t - r->tail + (rec->kind == QT_LEAF);
-	if ((size_t)(end - p) < n || memcmp(p, r->tail, n) != 0)
+	if ((size_t)(limit - p) < n || memcmp(p, r->tail, n) != 0)
 		return 0;
 	p += n;
-	if (rec->kind == QT_NODE && p != end)
-		return 0;
 	c->class = 0;
 	c->id = 0;
 	c->frac = -1;
@@ -515,11 +530,14 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 		if (*p != 'F' && *p != 'E' && *p != 'P')
 			return 0;
 		c->class = *p++;
-		if (p != end && (*p != ' ' || !fastid(p + 1, end, &c->id)))
+		c->textlen = p - line;
+		if (*p == ' ' && (p = fastid(p + 1, &c->id)) == NULL)
 			return 0;
-		c->textlen = (p - line);
 	} else
-		c->textlen = len;
+		c->textlen = p - line;
+	if (whole ? p != limit : *p != '\n')
+		return 0;
+	line[p - line] = '\0';
 	c->text = line;
 	c->level = level;
 	c->path = path;
@@ -530,7 +548,7 @@ fastcell(struct qtreader *r, struct qtrec *rec, const char *line, size_t len)
 	c->x = kx->v;
 	c->y = ky->v;
 	c->size = ks->v;
-	return 1;
+	return p - line;
 }
 
 static void
@@ -992,6 +1010,7 @@ readline(struct qtreader *r, size_t *len)
 		if (n == 0)
 			r->eof = 1;
 		r->end += n;
+		r->buf[r->end] = '\0';	/* fastcell's sentinel */
 	}
 }
 
@@ -1031,12 +1050,25 @@ atend(struct qtreader *r)
 	report(r, 1);
 }
 
+/* A cell that fastcell took, as qt_read returns it. */
+static inline enum qtkind
+fastdone(struct qtreader *r, struct qtrec *rec, char *line, size_t n)
+{
+	rec->line = line;
+	rec->len = n;
+	rec->lineno = r->lineno;
+	rec->nrec = 1;
+	if ((++r->count & 0xfffff) == 0)
+		report(r, 0);
+	return rec->kind;
+}
+
 /*
- * Returns the next record, QT_EOF after a valid end record.  Every defect
- * of the stream is reported here with the file and line, and exits 1.
+ * qt_read's long way: a line at a time, each a cell taken at once when it
+ * is one as the writers spell it, or a record parsed field by field.
  */
-enum qtkind
-qt_read(struct qtreader *r, struct qtrec *rec)
+static NOINLINE enum qtkind
+readrecord(struct qtreader *r, struct qtrec *rec)
 {
 	enum qtkind kind;
 	char *line;
@@ -1048,15 +1080,10 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 			return QT_EOF;
 		}
 		r->lineno++;
-		if (r->state == IN_BODY && n > 5 && fastcell(r, rec, line, n)) {
-			rec->line = line;
-			rec->len = n;
-			rec->lineno = r->lineno;
-			rec->nrec = 1;
-			if ((++r->count & 0xfffff) == 0)
-				report(r, 0);
-			return rec->kind;
-		}
+		if (r->state == IN_BODY && n > 5 &&
+		    (line[0] == 'l' || line[0] == 'n') &&	/* not a v */
+		    fastcell(r, rec, line, line + n, 1) > 0)
+			return fastdone(r, rec, line, n);
 		checkline(r, line, n);
 		if (line[0] == '#')
 			continue;
@@ -1078,6 +1105,28 @@ qt_read(struct qtreader *r, struct qtrec *rec)
 			return kind;
 		}
 	}
+}
+
+/*
+ * Returns the next record, QT_EOF after a valid end record.  Every defect
+ * of the stream is reported here with the file and line, and exits 1.
+ * The common record, a cell as the writers spell it, is checked straight
+ * in the buffer when it holds more than the longest such cell, its
+ * newline found as it is checked; anything else takes the long way.
+ */
+enum qtkind
+qt_read(struct qtreader *r, struct qtrec *rec)
+{
+	char *line = r->buf + r->pos;
+	size_t n;
+
+	if (r->state == IN_BODY && r->end - r->pos > FASTROOM &&
+	    (n = fastcell(r, rec, line, r->buf + r->end, 0)) > 0) {
+		r->pos += n + 1;
+		r->lineno++;
+		return fastdone(r, rec, line, n);
+	}
+	return readrecord(r, rec);
 }
 
 /*

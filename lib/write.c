@@ -319,8 +319,9 @@ static void
 gridtext(struct gridtext *t, int axis, int level, uint64_t i, uint64_t key)
 {
 	t->key = key;
-	t->len = fmtreal(t->text, cellcoord(axis ? w.cell.u.y0 : w.cell.u.x0,
-	    w.cell.u.size, level, i)) - t->text;
+	/* cellcoord's x0 + i h, its h computed once */
+	t->len = fmtreal(t->text, (axis ? w.cell.u.y0 : w.cell.u.x0) +
+	    (double)i * w.cell.size[level]) - t->text;
 }
 
 /* Writes the coordinate of grid line i at level on axis 0 (x) or 1 (y). */

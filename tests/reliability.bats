@@ -316,3 +316,38 @@ longrecord() {
 		[[ "$last" =~ ^$p:\ $n\ records\ read,\ deepest\ level\ $deepest,\ [0-9]+\ s$ ]]
 	done
 }
+
+# A defect in cell line N of a stream of about 400 KB, more than the
+# reader's 256 KB buffer: the cells before it are taken straight from the
+# buffer, and some lines cross a buffer's end.  N is counted by awk, not
+# by the programs; the messages are those of tests/bad/EXPECT.
+@test "a defect deep in a large stream is named at its line, however the input arrives" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 >big.qt
+	[ "$(wc -c <big.qt)" -gt 300000 ]
+	n=$(awk '$1 == "leaf" && ++k == 3000 { print NR; exit }' big.qt)
+	[ -n "$n" ]
+	awk -v n="$n" 'NR == n { printf "%s\r\n", $0; next } { print }' \
+	    big.qt >cr.qt
+	awk -v n="$n" 'NR == n { printf "%s%c\n", $0, 0; next } { print }' \
+	    big.qt >nul.qt
+	awk -v n="$n" 'NR == n { $0 = $0 " 0" } { print }' big.qt >zero.qt
+	for p in qtleaves qtstats qtcat; do
+		run --separate-stderr "$p" cr.qt
+		[ "$status" -eq 1 ]
+		[[ "$stderr" == "$p: cr.qt:$n: carriage return at end of line"* ]]
+		run --separate-stderr "$p" nul.qt
+		[ "$status" -eq 1 ]
+		[ "$stderr" = "$p: nul.qt:$n: NUL byte in input" ]
+		run --separate-stderr "$p" zero.qt
+		[ "$status" -eq 1 ]
+		[ "$stderr" = "$p: zero.qt:$n: element id out of range 1 to 9223372036854775807: 0" ]
+	done
+	# through a pipe in pieces of 1000 bytes, which cut lines anywhere:
+	# the same output as from the file, the same message at the same line
+	qtleaves -n big.qt >file.out
+	dd if=big.qt bs=1000 2>/dev/null | qtleaves -n >pipe.out
+	cmp file.out pipe.out
+	run --separate-stderr sh -c 'dd if=nul.qt bs=1000 2>/dev/null | qtstats'
+	[ "$status" -eq 1 ]
+	[ "$stderr" = "qtstats: stdin:$n: NUL byte in input" ]
+}

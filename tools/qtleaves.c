@@ -48,16 +48,18 @@ meshleaf(const struct cell *c, int kept, unsigned long long id)
 	/* counter-clockwise from the lower left */
 	uint64_t px[4] = { x, x + s, x + s, x }, py[4] = { y, y, y + s, y + s };
 	unsigned long long v[4];
+	static unsigned long long numbered;	/* vertices so far */
 
 	corners_at(corners, x, y);
 	if (!kept)
 		return;
 	for (k = 0; k < 4; k++) {
-		size_t before = corners_count(corners);
-
+		/* numbered in order of first use: a new one is the next */
 		v[k] = corners_id(corners, px[k], py[k]);
-		if (corners_count(corners) > before)
+		if (v[k] > numbered) {
+			numbered = v[k];
 			qt_gridvertex(v[k], QT_GRID, px[k], py[k]);
+		}
 	}
 	qt_elem(id, "quad", 4, v);
 }

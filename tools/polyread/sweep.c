@@ -629,10 +629,10 @@ sweepvertex(struct point p, size_t nvert, uint32_t *leave, size_t nleave,
  * The sweep's order of the vertices, by x, then y, then number.  A radix
  * sort, least significant digit first, of the top 32 bits of x (sign,
  * exponent and 20 bits of mantissa, which tell most vertices apart) keeps
- * the numbers in order among equal keys; the vertices' points are then
- * gathered in that order, in a loop whose reads do not wait for one
- * another, and each run of equal keys is put in order by its points.  The
- * sweep reads the points in order from there.
+ * the numbers in order among equal keys, and each run of equal keys is
+ * put in order by its points.  The order holds vertex numbers alone, 4
+ * bytes a vertex where a copy of the points took 24: the sweep, which
+ * reads each vertex's edges anyway, takes the point from there.
  */
 #define DIGITBITS	11
 #define NDIGITS		3	/* of DIGITBITS, to cover 32 */
@@ -650,24 +650,31 @@ sortkey(double v)
 	return (u >> 63 ? ~u : u | (uint64_t)1 << 63) >> 32;
 }
 
-struct vertex {
-	struct point	 p;
-	uint32_t	 k;
-};
-
+/*
+ * Vertices k and l of the sweep, by their points, then their numbers; a
+ * vertex's point is its edge's first end.
+ */
 static int
-cmpvertex(const void *a, const void *b)
+cmpvertex(uint32_t k, uint32_t l)
 {
-	const struct vertex *s = a, *t = b;
+	struct point p = ep(k, 0), q = ep(l, 0);
 
-	if (s->p.x != t->p.x)
-		return s->p.x < t->p.x ? -1 : 1;
-	if (s->p.y != t->p.y)
-		return s->p.y < t->p.y ? -1 : 1;
-	return (s->k > t->k) - (s->k < t->k);
+	if (p.x != q.x)
+		return p.x < q.x ? -1 : 1;
+	if (p.y != q.y)
+		return p.y < q.y ? -1 : 1;
+	return (k > l) - (k < l);
 }
 
-static struct vertex *
+static int
+cmpvertexp(const void *a, const void *b)
+{
+	const uint32_t *k = a, *l = b;
+
+	return cmpvertex(*k, *l);
+}
+
+static uint32_t *
 sweeporder(uint32_t n)
 {
 	uint32_t *key = xreallocarray(NULL, n + 1, sizeof(*key));
@@ -675,7 +682,6 @@ sweeporder(uint32_t n)
 	uint32_t *ord = xreallocarray(NULL, n + 1, sizeof(*ord));
 	uint32_t *ord2 = xreallocarray(NULL, n + 1, sizeof(*ord2)), *ot;
 	size_t (*count)[RADIX] = xreallocarray(NULL, NDIGITS, sizeof(*count));
-	struct vertex *v;
 	size_t i, j, k, d, sum;
 
 	memset(count, 0, NDIGITS * sizeof(*count));
@@ -709,30 +715,24 @@ sweeporder(uint32_t n)
 	free(count);
 	free(key2);
 	free(ord2);
-	v = xreallocarray(NULL, n + 1, sizeof(*v));
-	for (i = 0; i < n; i++) {
-		v[i].p = ep(ord[i], 0);
-		v[i].k = ord[i];
-	}
 	for (i = 0; i < n; i = j) {
 		for (j = i + 1; j < n && key[j] == key[i]; j++)
 			;
 		if (j - i > 16)
-			qsort(v + i, j - i, sizeof(*v), cmpvertex);
+			qsort(ord + i, j - i, sizeof(*ord), cmpvertexp);
 		else
 			for (k = i + 1; k < j; k++) {
-				struct vertex t = v[k];
+				uint32_t t = ord[k];
 				size_t m;
 
-				for (m = k; m > i && cmpvertex(&v[m - 1], &t) > 0;
+				for (m = k; m > i && cmpvertex(ord[m - 1], t) > 0;
 				    m--)
-					v[m] = v[m - 1];
-				v[m] = t;
+					ord[m] = ord[m - 1];
+				ord[m] = t;
 			}
 	}
 	free(key);
-	free(ord);
-	return v;
+	return ord;
 }
 
 /*
@@ -762,18 +762,18 @@ nearedge(uint32_t k, struct point p)
 static void
 sweep(uint32_t n)
 {
-	struct vertex *ord = sweeporder(n);
+	uint32_t *ord = sweeporder(n);
 	uint32_t *leave = NULL;
 	size_t cap = 0, i, g;
 
 	root = bottom = NONE;
 	for (i = 0; i < n; i = g) {
-		struct point p = ord[i].p;
+		struct point p = ep(ord[i], 0);
 		uint32_t ending = NONE;
 		size_t nleave = 0;
 
-		for (g = i; g < n && samepoint(ord[g].p, p); g++) {
-			uint32_t k = ord[g].k, r = edges[k].ring;
+		for (g = i; g < n && samepoint(ep(ord[g], 0), p); g++) {
+			uint32_t k = ord[g], r = edges[k].ring;
 			uint32_t prev = k > first[r] ? k - 1 :
 			    k + rings[r].n - 1;
 
@@ -802,7 +802,7 @@ sweep(uint32_t n)
 				ending = prev;
 		}
 		sweepvertex(p, g - i, leave, nleave, ending, ending != NONE ? NONE :
-		    nearedge(ord[i].k, p));
+		    nearedge(ord[i], p));
 	}
 	free(leave);
 	free(ord);
