@@ -109,13 +109,11 @@ area2='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	[ -z "$output" ]
 }
 
-@test "-b is refused with -H, -c and the exports it does not write yet" {
+@test "-b is refused with -H and -c" {
 	run -2 --separate-stderr qtmesh -b -H /dev/null
 	[[ "$stderr" == *"not with -H"* ]]
 	run -2 --separate-stderr qtmesh -b -c F /dev/null
 	[[ "$stderr" == *"not with -c"* ]]
-	run -2 --separate-stderr qtmesh -b -f msh /dev/null
-	[[ "$stderr" == *"-f qtree only"* ]]
 	run -2 --separate-stderr qtmesh -x
 	[ "${stderr_lines[1]}" = "usage: qtmesh [-bHhrTv] [-c classes] [-f format] [-o basename] [file]" ]
 	grep -q '^\.Op Fl bHhrTv$' "$TOP/man/qtmesh.1"
@@ -253,4 +251,133 @@ bfitcheck() {
 		n=$((n + 1))
 	done
 	[ "$n" -gt 0 ]
+}
+
+# The length of the boundary lines by tag, from a .msh, and each ring's
+# perimeter from the tree: "ring N LINES LENGTH PERIMETER" a line.
+ringlengths() {
+	python3 - "$1" "$2" <<-'PY'
+	import math, sys
+	pts, lines, sec = {}, {}, None
+	for l in open(sys.argv[1]):
+	    w = l.split()
+	    if w and w[0].startswith('$'):
+	        sec = w[0]
+	    elif sec == '$Nodes' and len(w) == 4:
+	        pts[w[0]] = (float(w[1]), float(w[2]))
+	    elif sec == '$Elements' and len(w) > 3 and w[1] == '1':
+	        a, b = pts[w[-2]], pts[w[-1]]
+	        n, s = lines.get(int(w[3]), (0, []))
+	        s.append(math.hypot(b[0] - a[0], b[1] - a[1]))
+	        lines[int(w[3])] = (n + 1, s)
+	rings = []
+	for l in open(sys.argv[2]):
+	    w = l.split()
+	    if w[0] == 'ring':
+	        rings.append([])
+	    elif w[0] == 'v':
+	        rings[-1].append((float(w[1]), float(w[2])))
+	for i, r in enumerate(rings, 1):
+	    p = math.fsum(math.hypot(q[0] - o[0], q[1] - o[1])
+	                  for o, q in zip(r, r[1:] + r[:1]))
+	    n, s = lines.get(i, (0, []))
+	    ok = abs(math.fsum(s) - p) <= 1e-12 * p
+	    print('ring', i, n, 'ok' if ok else 'LENGTH %r %r' % (math.fsum(s), p))
+	PY
+}
+
+@test "msh: the -b mesh with its boundary as lines tagged by ring, each ring's lines as long as the ring" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 | qtbalance > tree.qt
+	qtmesh -b -f msh tree.qt > m.msh
+	# the same mesh as -f qtree, checked the same way
+	run -0 python3 "$TOP/tests/bfitcheck.py" m.msh tree.qt
+	qtmesh -b tree.qt | python3 "$TOP/tests/bfitcheck.py" /dev/stdin > want
+	[ "$output" = "$(cat want)" ]
+	# ring 1 the outer ring, ring 2 the square hole: 4 sides, each cut
+	# into pieces by the cells it crosses
+	run -0 ringlengths m.msh tree.qt
+	[[ "${lines[0]}" == "ring 1 "*" ok" ]]
+	[[ "${lines[1]}" == "ring 2 "*" ok" ]]
+	# all the lines: the sides used once
+	b=$(awk '{ print $10 }' want)
+	[ "$(echo "${lines[0]} ${lines[1]}" | awk '{ print $3 + $7 }')" = "$b" ]
+	grep -q '^1 1 "ring 1"$' m.msh
+	grep -q '^1 2 "ring 2"$' m.msh
+}
+
+@test "msh: meshio reads the -b mesh back with its counts and tags" {
+	py=$(meshio_python) || skip "python3-meshio not installed"
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 | qtbalance > tree.qt
+	qtmesh -b -f msh tree.qt > m.msh
+	qtmesh -b tree.qt > mesh.qt
+	run -0 "$py" -c '
+import meshio
+m = meshio.read("m.msh")
+n, tags = {}, {}
+for b, t in zip(m.cells, m.cell_data["gmsh:physical"]):
+    n[b.type] = n.get(b.type, 0) + len(b.data)
+    tags.setdefault(b.type, set()).update(int(v) for v in t)
+print(len(m.points), n.get("quad", 0), n.get("triangle", 0), n.get("line", 0))
+print(*sorted(tags["line"]), *sorted(m.field_data))'
+	v=$(grep -c '^vertex ' mesh.qt)
+	q=$(grep -c '^elem [0-9]* quad ' mesh.qt)
+	t=$(grep -c '^elem [0-9]* tri ' mesh.qt)
+	l=$(python3 "$TOP/tests/bfitcheck.py" mesh.qt | awk '{ print $10 }')
+	[ "${lines[0]}" = "$v $q $t $l" ]
+	[ "${lines[1]}" = "1 2 full partial ring 1 ring 2" ]
+}
+
+@test "msh: gmsh -check reads the -b mesh without warnings" {
+	command -v gmsh >/dev/null 2>&1 || skip "gmsh not installed"
+	awk -v shape=star -v n=1000 -f "$TOP/tools/genpoly.awk" | polyread |
+	    qtsplit -l 7 | qtbalance | qtmesh -b -f msh > m.msh
+	run -0 gmsh -check m.msh
+	! grep -qi -e warning -e error <<< "$output"
+	grep -q 'Checking for duplicate nodes' <<< "$output"
+	grep -q 'Checking for isolated nodes' <<< "$output"
+	grep -q "Info *: $(awk '/^\$Nodes/ { getline; print; exit }' m.msh) nodes" <<< "$output"
+}
+
+@test "vtk: meshio reads the -b mesh back, its boundary as lines with their ring" {
+	py=$(meshio_python) || skip "python3-meshio not installed"
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 | qtbalance > tree.qt
+	qtmesh -b -f vtk tree.qt > m.vtk
+	qtmesh -b -f msh tree.qt > m.msh
+	run -0 "$py" -c '
+import meshio
+m = meshio.read("m.vtk")
+n, ring = {}, {}
+for b, r in zip(m.cells, m.cell_data["ring"]):
+    n[b.type] = n.get(b.type, 0) + len(b.data)
+    for v in r:
+        ring[(b.type, int(v))] = ring.get((b.type, int(v)), 0) + 1
+print(len(m.points), n.get("quad", 0), n.get("triangle", 0), n.get("line", 0))
+print(ring.get(("line", 1), 0), ring.get(("line", 2), 0), ring.get(("line", 0), 0))'
+	# the counts of the msh, by another reader: nodes, quads, triangles,
+	# lines, and lines by ring
+	want=$(awk '/^\$Nodes/ { getline; v = $1 } /^\$Elements/ { e = 1; getline; next }
+	    /^\$EndElements/ { e = 0 } e { c[$2]++; if ($2 == 1) r[$4]++ }
+	    END { print v, c[3] + 0, c[2] + 0, c[1] + 0; print r[1] + 0, r[2] + 0, 0 }' m.msh)
+	[ "$output" = "$want" ]
+}
+
+@test "triangle: .node markers, .poly segments by ring, .ele triangles agree with the msh" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 | qtbalance > tree.qt
+	qtmesh -b -f triangle -o m tree.qt
+	qtmesh -b -T -f msh tree.qt > m.msh
+	qtmesh -b -T tree.qt > mesh.qt
+	[ "$(head -n 1 m.node)" = "$(grep -c '^vertex ' mesh.qt) 2 0 1" ]
+	[ "$(head -n 1 m.ele)" = "$(grep -c '^elem ' mesh.qt) 3 1" ]
+	# the segments are the msh's lines, marker for tag
+	awk '/^\$Elements/ { e = 1; getline; next } /^\$EndElements/ { e = 0 }
+	    e && $2 == 1 { print $6, $7, $4 }' m.msh > lines
+	[ "$(sed -n 2p m.poly)" = "$(wc -l < lines) 1" ]
+	awk 'NR > 2 && NF == 4 { print $2, $3, $4 }' m.poly | diff -u lines -
+	[ "$(tail -n 1 m.poly)" = 0 ]
+	# a vertex's marker is the ring of the segments through it, else 0
+	awk 'FILENAME ~ /poly$/ { if (FNR > 2 && NF == 4) r[$2] = r[$3] = $4; next }
+	    FNR > 1 && $4 != ($1 in r ? r[$1] : 0) { print "vertex " $1; bad = 1 }
+	    END { exit bad }' m.poly m.node
+	# and the triangles are those of -T
+	awk 'NR > 1 { print "elem", $1, "tri", $2, $3, $4 }' m.ele | diff -u <(grep '^elem ' mesh.qt) -
 }

@@ -65,15 +65,6 @@ twolevel() {
 	polyread "$1" | qtsplit -m "$2" -l $(($2 + 1))
 }
 
-# A python3 that has meshio: Debian's python3-meshio is for /usr/bin/python3,
-# which another python3 may come before on PATH.
-meshio_python() {
-	for p in python3 /usr/bin/python3; do
-		"$p" -c 'import meshio' 2>/dev/null && { echo "$p"; return 0; }
-	done
-	return 1
-}
-
 @test "the L-shape's conforming mesh is the one worked out by hand" {
 	lshape > in.qt
 	cat > expected <<'EOF'

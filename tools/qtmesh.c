@@ -88,6 +88,12 @@ struct elem {
 	uint32_t	v[4];	/* v[3] == 0 for a triangle */
 };
 
+static int
+nverts(const struct elem *e)
+{
+	return e->v[3] ? 4 : 3;
+}
+
 struct hang {
 	uint32_t	v, a, b;	/* v == 0 until its vertex is numbered */
 	uint64_t	x, y;		/* grid point of v */
@@ -96,6 +102,7 @@ struct hang {
 struct seg {			/* a side on the boundary, a to b */
 	uint32_t	a, b;	/* 0: the midpoint of hang h */
 	uint32_t	h;
+	uint32_t	ring;	/* -b: the ring it runs along, from 1 */
 };
 
 static unsigned keep = CLASSBIT('F') | CLASSBIT('P');
@@ -497,6 +504,7 @@ addseg(uint32_t a, uint32_t b, uint32_t h)
 	segs[nsegs].a = a;
 	segs[nsegs].b = b;
 	segs[nsegs].h = h;
+	segs[nsegs].ring = 0;
 	nsegs++;
 }
 
@@ -567,7 +575,7 @@ static int bfit;
 static struct cutter *cutter;
 static struct earclip *ear;
 static struct point *lpts;	/* every leaf's loops, one after another */
-static size_t nlpts, lptcap;
+static size_t nlpts, lptcap, *lring, lringcap, nlring;	/* lring: see below */
 static size_t *llen, nllen, llencap;
 static size_t *leafloops;	/* leaf i: loops leafloops[i] to [i + 1] */
 static size_t *leafpts;		/* leaf i: its loops' points from here */
@@ -576,6 +584,11 @@ static size_t nvline, nhline, vlinecap, hlinecap;
 static size_t *elstart;		/* leaf i: elements elstart[i] to [i + 1] */
 static struct point *poly;	/* the loops of one leaf, points taken in */
 static size_t npoly, polycap, *plen, nplen, plencap;
+/* per point of lpts and poly: the ring the loop runs along from it, or 0 */
+static size_t *pring, npring, pringcap;
+/* the rings as read, for sides along grid lines */
+static struct point *rpts;
+static size_t nrpts, rptcap, *rlen, nrlen, rlencap;
 
 /* The vertices of -b, any doubles: a table from point to number. */
 static struct bslot {
@@ -634,6 +647,15 @@ bvertex(double x, double y)
 	return btab[k].id;
 }
 
+/* Is p in the box of the segment from a to b, closed? */
+static int
+inbox(struct point p, struct point a, struct point b)
+{
+	return (a.x < b.x ? a.x <= p.x && p.x <= b.x : b.x <= p.x &&
+	    p.x <= a.x) && (a.y < b.y ? a.y <= p.y && p.y <= b.y :
+	    b.y <= p.y && p.y <= a.y);
+}
+
 static void
 leafbox(const struct leaf *l, double x[2], double y[2])
 {
@@ -652,16 +674,23 @@ addpoint(struct point **a, size_t *n, size_t *cap, double x, double y)
 }
 
 static void
-addlpt(double x, double y)
+addsize(size_t **a, size_t *n, size_t *cap, size_t v)
+{
+	*a = grow(*a, cap, *n, sizeof(**a));
+	(*a)[(*n)++] = v;
+}
+
+static void
+addlpt(double x, double y, size_t ring)
 {
 	addpoint(&lpts, &nlpts, &lptcap, x, y);
+	addsize(&lring, &nlring, &lringcap, ring);
 }
 
 static void
 addllen(size_t n)
 {
-	llen = grow(llen, &llencap, nllen, sizeof(*llen));
-	llen[nllen++] = n;
+	addsize(&llen, &nllen, &llencap, n);
 }
 
 static void
@@ -705,7 +734,7 @@ bfitloops(void)
 {
 	char path[QT_GRID + 2];
 	const struct point *pts;
-	const size_t *len;
+	const size_t *len, *ring;
 	struct cell c;
 	double x[2], y[2], frac;
 	size_t i, j, k, n, at;
@@ -730,19 +759,21 @@ bfitloops(void)
 			    "tree's", c.path, l->class, class);
 		leafbox(l, x, y);
 		if (l->class == 'F') {
-			addlpt(x[0], y[0]);
-			addlpt(x[1], y[0]);
-			addlpt(x[1], y[1]);
-			addlpt(x[0], y[1]);
+			addlpt(x[0], y[0], 0);
+			addlpt(x[1], y[0], 0);
+			addlpt(x[1], y[1], 0);
+			addlpt(x[0], y[1], 0);
 			addllen(4);
 		} else {
 			n = cut_loops(cutter, &c, &pts, &len);
 			if (n == (size_t)-1)
 				errat(inname, l->lineno, "leaf %s: the rings do "
 				    "not close round it", c.path);
+			ring = cut_looprings(cutter);
 			for (j = at = 0; j < n; at += len[j++]) {
 				for (k = 0; k < len[j]; k++)
-					addlpt(pts[at + k].x, pts[at + k].y);
+					addlpt(pts[at + k].x, pts[at + k].y,
+					    ring[at + k]);
 				addllen(len[j]);
 			}
 		}
@@ -767,9 +798,10 @@ bfitloops(void)
 }
 
 static void
-addpoly(double x, double y)
+addpoly(double x, double y, size_t ring)
 {
 	addpoint(&poly, &npoly, &polycap, x, y);
+	addsize(&pring, &npring, &pringcap, ring);
 }
 
 /*
@@ -798,9 +830,9 @@ takein(const struct linept *a, size_t n, int vertical, double line,
 		    end - 1 - i];
 
 		if (vertical)
-			addpoly(line, p->pos);
+			addpoly(line, p->pos, 0);
 		else
-			addpoly(p->pos, line);
+			addpoly(p->pos, line, 0);
 	}
 }
 
@@ -865,6 +897,118 @@ bfittemplate(const struct leaf *l, const double x[2], const double y[2])
 	return 1;
 }
 
+/*
+ * Directed sides a -> b of elements, as a table from the pair to a
+ * number: the ring a side runs along, or 1 for every side.
+ */
+struct sidemap {
+	struct sideslot {
+		uint64_t	key;	/* a << 32 | b; 0: free */
+		uint32_t	val;
+	}	*slot;
+	size_t	 cap, n;
+};
+
+static struct sidemap ringsides, allsides;
+
+static size_t
+sideslot(const struct sidemap *m, uint64_t key)
+{
+	uint64_t h = key * UINT64_C(0x9E3779B97F4A7C15);
+	size_t k;
+
+	for (k = (h ^ h >> 29) & (m->cap - 1); m->slot[k].key != 0 &&
+	    m->slot[k].key != key; k = (k + 1) & (m->cap - 1))
+		;
+	return k;
+}
+
+static void
+sideput(struct sidemap *m, uint32_t a, uint32_t b, uint32_t val)
+{
+	uint64_t key = (uint64_t)a << 32 | b;
+	size_t k;
+
+	if (2 * (m->n + 1) > m->cap) {
+		struct sideslot *old = m->slot;
+		size_t i, oldcap = m->cap;
+
+		m->cap = oldcap ? 2 * oldcap : 1024;
+		m->slot = xcalloc(m->cap, sizeof(*m->slot));
+		for (i = 0; i < oldcap; i++)
+			if (old[i].key != 0)
+				m->slot[sideslot(m, old[i].key)] = old[i];
+		free(old);
+	}
+	k = sideslot(m, key);
+	if (m->slot[k].key == 0)
+		m->n++;
+	m->slot[k].key = key;
+	m->slot[k].val = val;
+}
+
+static uint32_t
+sideget(const struct sidemap *m, uint32_t a, uint32_t b)
+{
+	uint64_t key = (uint64_t)a << 32 | b;
+
+	return m->cap == 0 ? 0 : m->slot[sideslot(m, key)].val;
+}
+
+/*
+ * The ring that a boundary side along a grid line runs along: one of its
+ * edges holds both ends, exactly.  0 for none, which the rings of a valid
+ * tree do not leave.
+ */
+static uint32_t
+ringalong(struct point a, struct point b)
+{
+	size_t r, k, at = 0;
+
+	for (r = 0; r < nrlen; at += rlen[r++])
+		for (k = 0; k < rlen[r]; k++) {
+			struct point p = rpts[at + k];
+			struct point q = rpts[at + (k + 1) % rlen[r]];
+
+			if (orient2d(p.x, p.y, q.x, q.y, a.x, a.y) == 0 &&
+			    orient2d(p.x, p.y, q.x, q.y, b.x, b.y) == 0 &&
+			    inbox(a, p, q) && inbox(b, p, q))
+				return r + 1;
+		}
+	return 0;
+}
+
+/*
+ * The sides of one element only, the boundary of the region, each with
+ * its ring: the loop's when a piece of a ring edge gave it, found among
+ * the rings' edges when it runs along a cell's side.
+ */
+static void
+bfitboundary(void)
+{
+	size_t i;
+	uint32_t a, b, ring;
+	int k, n;
+
+	for (i = 0; i < nelems; i++)
+		for (n = nverts(&elems[i]), k = 0; k < n; k++)
+			sideput(&allsides, elems[i].v[k], elems[i].v[(k + 1) % n],
+			    1);
+	for (i = 0; i < nelems; i++)
+		for (n = nverts(&elems[i]), k = 0; k < n; k++) {
+			a = elems[i].v[k];
+			b = elems[i].v[(k + 1) % n];
+			if (sideget(&allsides, b, a) != 0)
+				continue;
+			if ((ring = sideget(&ringsides, a, b)) == 0)
+				ring = ringalong(bv[a - 1], bv[b - 1]);
+			addseg(a, b, 0);
+			segs[nsegs - 1].ring = ring;
+		}
+	free(allsides.slot);
+	free(ringsides.slot);
+}
+
 /* The elements of leaf i: its loops, the points on its sides taken in. */
 static void
 meshbfit(size_t i)
@@ -877,7 +1021,7 @@ meshbfit(size_t i)
 	size_t j, k, at, start, ntri;
 
 	leafbox(l, x, y);
-	npoly = nplen = 0;
+	npoly = nplen = npring = 0;
 	at = leafpts[i];
 	for (j = leafloops[i]; j < leafloops[i + 1]; at += llen[j++]) {
 		start = npoly;
@@ -885,7 +1029,7 @@ meshbfit(size_t i)
 			struct point p = lpts[at + k];
 			struct point q = lpts[at + (k + 1) % llen[j]];
 
-			addpoly(p.x, p.y);
+			addpoly(p.x, p.y, lring[at + k]);
 			if (p.x == q.x && (p.x == x[0] || p.x == x[1]))
 				takein(vline, nvline, 1, p.x, p.y, q.y);
 			else if (p.y == q.y && (p.y == y[0] || p.y == y[1]))
@@ -908,6 +1052,17 @@ meshbfit(size_t i)
 			    poly[tri[3 * j + k]].y);
 		addbelem(v, 3);
 	}
+	/* the sides along rings, their vertices numbered by now */
+	for (j = at = 0; j < nplen; at += plen[j++])
+		for (k = 0; k < plen[j]; k++)
+			if (pring[at + k] != 0) {
+				const struct point *p = &poly[at + k];
+				const struct point *q = &poly[at + (k + 1) %
+				    plen[j]];
+
+				sideput(&ringsides, bvertex(p->x, p->y),
+				    bvertex(q->x, q->y), pring[at + k]);
+			}
 }
 
 static void
@@ -925,6 +1080,8 @@ bfitmesh(void)
 	elstart[nleaves] = nelems;
 	ear_free(ear);
 	cut_free(cutter);
+	if (format != QTREE)
+		bfitboundary();
 }
 
 /* The number of leaf i's elements. */
@@ -948,12 +1105,6 @@ resolve(void)
 		if (segs[i].b == 0)
 			segs[i].b = hangs[segs[i].h - 1].v;
 	}
-}
-
-static int
-nverts(const struct elem *e)
-{
-	return e->v[3] ? 4 : 3;
 }
 
 /* The largest difference of vertex numbers within an element. */
@@ -1237,6 +1388,28 @@ writeqtree(size_t nv, const uint32_t *inv)
 	qt_end();
 }
 
+/*
+ * -b: the rings that boundary sides run along, each a physical group of
+ * lines, "ring N" with tag N, written to fp unless NULL: their count.
+ */
+static size_t
+ringtags(FILE *fp)
+{
+	unsigned char *has = xcalloc(nrlen + 1, 1);
+	size_t i, n = 0;
+
+	for (i = 0; i < nsegs && bfit; i++)
+		if (segs[i].ring != 0 && !has[segs[i].ring]) {
+			has[segs[i].ring] = 1;
+			n++;
+		}
+	for (i = 1; i <= nrlen && fp != NULL; i++)
+		if (has[i])
+			fprintf(fp, "1 %zu \"ring %zu\"\n", i, i);
+	free(has);
+	return n;
+}
+
 static void
 writemsh(size_t nv, const uint32_t *inv)
 {
@@ -1247,11 +1420,12 @@ writemsh(size_t nv, const uint32_t *inv)
 
 	for (i = 0; i < nleaves; i++)
 		tags[classtag(leaves[i].class)] = 1;
-	tags[3] = nsegs > 0;
+	tags[3] = nsegs > 0 && !bfit;
 	printf("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%d\n",
-	    tags[1] + tags[2] + tags[3] + tags[4]);
+	    tags[1] + tags[2] + tags[3] + tags[4] + (int)ringtags(NULL));
 	if (tags[3])
 		printf("1 3 \"boundary\"\n");
+	ringtags(stdout);
 	if (tags[1])
 		printf("2 1 \"full\"\n");
 	if (tags[2])
@@ -1267,7 +1441,7 @@ writemsh(size_t nv, const uint32_t *inv)
 	}
 	printf("$EndNodes\n$Elements\n%zu\n", nelems + nsegs);
 	for (i = 0; i < nleaves; i++)
-		for (j = 0; j < leaves[i].nel; j++, e++) {
+		for (j = 0; j < leafnel(i); j++, e++) {
 			n = nverts(&elems[e]);
 			iv[0] = ++id;
 			iv[1] = n == 4 ? 3 : 2;
@@ -1281,7 +1455,7 @@ writemsh(size_t nv, const uint32_t *inv)
 		iv[0] = ++id;
 		iv[1] = 1;
 		iv[2] = 2;
-		iv[3] = iv[4] = 3;
+		iv[3] = iv[4] = bfit ? segs[i].ring : 3;
 		iv[5] = perm[segs[i].a - 1];
 		iv[6] = perm[segs[i].b - 1];
 		putline(stdout, iv, 7, NULL, 0, "");
@@ -1294,7 +1468,7 @@ writevtk(size_t nv, const uint32_t *inv)
 {
 	long long iv[5];
 	double xy[3];
-	size_t i, j, e, nref = 0;
+	size_t i, j, e, nref = 0, nline;
 	int k, n, pass;
 
 	printf("# vtk DataFile Version 3.0\nqtmesh\nASCII\n"
@@ -1306,7 +1480,8 @@ writevtk(size_t nv, const uint32_t *inv)
 	}
 	for (i = 0; i < nelems; i++)
 		nref += 1 + nverts(&elems[i]);
-	printf("CELLS %zu %zu\n", nelems, nref);
+	nline = bfit ? nsegs : 0;	/* -b: the boundary as lines, type 3 */
+	printf("CELLS %zu %zu\n", nelems + nline, nref + 3 * nline);
 	for (i = 0; i < nelems; i++) {
 		n = nverts(&elems[i]);
 		iv[0] = n;
@@ -1314,17 +1489,28 @@ writevtk(size_t nv, const uint32_t *inv)
 			iv[1 + k] = perm[elems[i].v[k] - 1] - 1;
 		putline(stdout, iv, 1 + n, NULL, 0, "");
 	}
-	printf("CELL_TYPES %zu\n", nelems);
+	for (i = 0; i < nline; i++) {
+		iv[0] = 2;
+		iv[1] = perm[segs[i].a - 1] - 1;
+		iv[2] = perm[segs[i].b - 1] - 1;
+		putline(stdout, iv, 3, NULL, 0, "");
+	}
+	printf("CELL_TYPES %zu\n", nelems + nline);
 	for (i = 0; i < nelems; i++)
 		printf("%d\n", nverts(&elems[i]) == 4 ? 9 : 5);
-	printf("CELL_DATA %zu\n", nelems);
-	for (pass = 0; pass < 2; pass++) {
+	for (i = 0; i < nline; i++)
+		printf("3\n");
+	printf("CELL_DATA %zu\n", nelems + nline);
+	for (pass = 0; pass < (bfit ? 3 : 2); pass++) {
 		printf("SCALARS %s int 1\nLOOKUP_TABLE default\n",
-		    pass ? "level" : "class");
+		    pass == 2 ? "ring" : pass ? "level" : "class");
 		for (i = e = 0; i < nleaves; i++)
-			for (j = 0; j < leaves[i].nel; j++, e++)
-				printf("%d\n", pass ? leaves[i].level :
-				    classtag(leaves[i].class));
+			for (j = 0; j < leafnel(i); j++, e++)
+				printf("%d\n", pass == 2 ? 0 : pass ?
+				    leaves[i].level : classtag(leaves[i].class));
+		for (i = 0; i < nline; i++)
+			printf("%lu\n", pass == 2 ?
+			    (unsigned long)segs[i].ring : 0UL);
 	}
 }
 
@@ -1354,27 +1540,43 @@ writetriangle(size_t nv, const uint32_t *inv)
 {
 	long long iv[5];
 	double xy[2];
-	char *name, *onb;
+	char *name, tail[32];
+	uint32_t *onb;
 	FILE *fp;
 	size_t i, j, e;
 	int k;
 
-	onb = xmalloc(nv + 1);
-	memset(onb, 0, nv + 1);
+	onb = xcalloc(nv + 1, sizeof(*onb));
 	for (i = 0; i < nsegs; i++)
-		onb[perm[segs[i].a - 1]] = onb[perm[segs[i].b - 1]] = 1;
+		onb[perm[segs[i].a - 1]] = onb[perm[segs[i].b - 1]] =
+		    bfit ? segs[i].ring : 1;
 	fp = create(".node", &name);
 	fprintf(fp, "%zu 2 0 1\n", nv);
 	for (i = 0; i < nv; i++) {
 		vertexxy(inv[i], xy);
 		iv[0] = i + 1;
-		putline(fp, iv, 1, xy, 2, onb[i + 1] ? " 1" : " 0");
+		tail[0] = ' ';
+		fmtint(tail + 1, onb[i + 1]);
+		putline(fp, iv, 1, xy, 2, tail);
 	}
 	finish(fp, name);
+	if (bfit) {	/* -b: the boundary's sides, marked by ring */
+		fp = create(".poly", &name);
+		fprintf(fp, "0 2 0 1\n%zu 1\n", nsegs);
+		for (i = 0; i < nsegs; i++) {
+			iv[0] = i + 1;
+			iv[1] = perm[segs[i].a - 1];
+			iv[2] = perm[segs[i].b - 1];
+			iv[3] = segs[i].ring;
+			putline(fp, iv, 4, NULL, 0, "");
+		}
+		fprintf(fp, "0\n");
+		finish(fp, name);
+	}
 	fp = create(".ele", &name);
 	fprintf(fp, "%zu 3 1\n", nelems);
 	for (i = e = 0; i < nleaves; i++)
-		for (j = 0; j < leaves[i].nel; j++, e++) {
+		for (j = 0; j < leafnel(i); j++, e++) {
 			iv[0] = e + 1;
 			for (k = 0; k < 3; k++)
 				iv[1 + k] = perm[elems[e].v[k] - 1];
@@ -1451,9 +1653,6 @@ main(int argc, char *argv[])
 	if (bfit && (!conform || cflag))
 		die(2, "-b meshes the region, from the F and P leaves: not "
 		    "with %s", cflag ? "-c" : "-H");
-	if (bfit && format != QTREE)
-		die(2, "-b: the boundary-fitted mesh is written as -f qtree "
-		    "only");
 	if (format == TRIANGLE)
 		alltri = 1;
 	inittemplates();
@@ -1479,8 +1678,13 @@ main(int argc, char *argv[])
 				qt_level(rec.level);
 			break;
 		case QT_RING:
-			if (bfit)
+			if (bfit) {
 				cut_addring(cutter, &rec.ring);
+				for (i = 0; i < rec.ring.n; i++)
+					addpoint(&rpts, &nrpts, &rptcap,
+					    rec.ring.v[i].x, rec.ring.v[i].y);
+				addsize(&rlen, &nrlen, &rlencap, rec.ring.n);
+			}
 			if (head)
 				qt_ring(&rec.ring);
 			break;
