@@ -17,6 +17,24 @@
 #include "qtree.h"
 #include "internal.h"
 
+/* The sign of the area of loop v[0..n), exactly: > 0 counter-clockwise. */
+int
+loop_sign(const struct point *v, size_t n)
+{
+	struct xsum a2;
+	size_t i;
+	int sign;
+
+	xs_init(&a2);
+	for (i = 0; i < n; i++) {
+		xs_addprod(&a2, v[i].x, v[(i + 1) % n].y);
+		xs_addprod(&a2, -v[(i + 1) % n].x, v[i].y);
+	}
+	sign = xs_sign(&a2);
+	xs_free(&a2);
+	return sign;
+}
+
 void
 xs_init(struct xsum *s)
 {

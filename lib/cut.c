@@ -64,6 +64,7 @@ struct cutter {
 	struct event	*ev;
 	size_t		 pccap;
 	struct point	*lp;
+	size_t		*lr;		/* per point: ring of its next side, or 0 */
 	size_t		*ll, nlp, lpcap, nll, llcap, lstart;
 	double		 box[4];		/* x0, x1, y0, y1 */
 	/* the path of the splitter's lists, down to the cell at hand */
@@ -104,6 +105,7 @@ cut_free(struct cutter *ct)
 	free(ct->pc);
 	free(ct->ev);
 	free(ct->lp);
+	free(ct->lr);
 	free(ct->ll);
 	xs_free(&ct->s);
 	xs_free(&ct->k);
@@ -588,19 +590,27 @@ cmpevent(const void *va, const void *vb)
 	return (ea->piece > eb->piece) - (ea->piece < eb->piece);
 }
 
+/*
+ * Adds p, from which the loop goes on along ring (its number from 1) or
+ * along the cell's side (0).
+ */
 static void
-addpoint(struct cutter *ct, struct point p)
+addpoint(struct cutter *ct, struct point p, size_t ring)
 {
 	size_t first = ct->lstart;
 
 	/* a point given twice running (a touch, a corner crossed) is one */
 	if (ct->nlp > first && ct->lp[ct->nlp - 1].x == p.x &&
-	    ct->lp[ct->nlp - 1].y == p.y)
+	    ct->lp[ct->nlp - 1].y == p.y) {
+		ct->lr[ct->nlp - 1] = ring;
 		return;
+	}
 	if (ct->nlp == ct->lpcap) {
 		ct->lpcap = ct->lpcap ? 2 * ct->lpcap : 64;
 		ct->lp = xreallocarray(ct->lp, ct->lpcap, sizeof(*ct->lp));
+		ct->lr = xreallocarray(ct->lr, ct->lpcap, sizeof(*ct->lr));
 	}
+	ct->lr[ct->nlp] = ring;
 	ct->lp[ct->nlp++] = p;
 }
 
@@ -705,13 +715,13 @@ endloop(struct cutter *ct)
 	ct->lstart = ct->nlp;
 }
 
-/* The piece of the edge that follows piece k's edge in its ring, as taken. */
+/* The ring of edge e, counted from 0: rstart[r] <= e < rstart[r + 1]. */
 static size_t
-nextpiece(const struct cutter *ct, size_t n, size_t k)
+ringof(const struct cutter *ct, size_t e)
 {
-	size_t e = ct->pc[k].edge, lo = 0, hi = ct->nrings, r, next;
+	size_t lo = 0, hi = ct->nrings;
 
-	while (hi - lo > 1) {	/* the ring: rstart[r] <= e < rstart[r + 1] */
+	while (hi - lo > 1) {
 		size_t mid = lo + (hi - lo) / 2;
 
 		if (ct->rstart[mid] <= e)
@@ -719,7 +729,15 @@ nextpiece(const struct cutter *ct, size_t n, size_t k)
 		else
 			hi = mid;
 	}
-	r = lo;
+	return lo;
+}
+
+/* The piece of the edge that follows piece k's edge in its ring, as taken. */
+static size_t
+nextpiece(const struct cutter *ct, size_t n, size_t k)
+{
+	size_t e = ct->pc[k].edge, lo, hi, r = ringof(ct, e), next;
+
 	if (!ct->flip[e])
 		next = e + 1 < ct->rstart[r + 1] ? e + 1 : ct->rstart[r];
 	else
@@ -799,7 +817,7 @@ cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
 			const struct piece *p = &ct->pc[ct->ev[cur].piece];
 			int sc = p->side[1], sj;
 
-			addpoint(ct, p->p[1]);
+			addpoint(ct, p->p[1], 0);
 			j = (cur + 1) % m;
 			if (ct->ev[j].end != 0)
 				return (size_t)-1;
@@ -811,12 +829,12 @@ cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
 
 				corner.x = x[(s % 4) == BOTTOM || (s % 4) == RIGHT];
 				corner.y = y[(s % 4) == RIGHT || (s % 4) == TOP];
-				addpoint(ct, corner);
+				addpoint(ct, corner, 0);
 			}
-			addpoint(ct, ct->pc[q].p[0]);
+			addpoint(ct, ct->pc[q].p[0], ringof(ct, ct->pc[q].edge) + 1);
 			while (ct->pc[q].side[1] == NONE) {
 				ct->pc[q].used = 1;
-				addpoint(ct, ct->pc[q].b);
+				addpoint(ct, ct->pc[q].b, ringof(ct, ct->pc[q].edge) + 1);
 				if ((q = nextpiece(ct, n, q)) == n ||
 				    ct->pc[q].side[0] != NONE)
 					return (size_t)-1;
@@ -835,7 +853,7 @@ cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
 		    { x[1], y[1] }, { x[0], y[1] } };
 
 		for (s = 0; s < 4; s++)
-			addpoint(ct, sq[s]);
+			addpoint(ct, sq[s], 0);
 		endloop(ct);
 	}
 	/* rings that lie inside the cell */
@@ -847,7 +865,7 @@ cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
 		q = k;
 		do {
 			ct->pc[q].used = 1;
-			addpoint(ct, ct->pc[q].b);
+			addpoint(ct, ct->pc[q].b, ringof(ct, ct->pc[q].edge) + 1);
 			if ((q = nextpiece(ct, n, q)) == n)
 				return (size_t)-1;
 		} while (q != k);
@@ -856,4 +874,14 @@ cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
 	*pts = ct->lp;
 	*len = ct->ll;
 	return ct->nll;
+}
+
+/*
+ * Along what each point of the last cut_loops goes on to the next: the
+ * number of its ring, from 1 in the order added, or 0 for the cell's side.
+ */
+const size_t *
+cut_looprings(const struct cutter *ct)
+{
+	return ct->lr;
 }

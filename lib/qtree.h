@@ -327,6 +327,7 @@ void	 qt_ring(const struct ring *);
 void	 qt_cell(const struct cell *, unsigned long long);
 void	 qt_cellfrac(const struct cell *, unsigned long long, double);
 void	 qt_gridvertex(unsigned long long, int, uint64_t, uint64_t);
+void	 qt_vertex(unsigned long long, double, double);
 void	 qt_elem(unsigned long long, const char *, size_t,
 	    const unsigned long long *);
 void	 qt_hang(unsigned long long, unsigned long long, unsigned long long);
@@ -342,7 +343,8 @@ void	 qt_end(void);
  * area.c (qtstats): exact sums of products.  An xsum is a floating-point
  * expansion; xs_round gives the double nearest to its exact value.
  * struct moments sums mo_edge over the edges of rings: a2 is twice the
- * signed area, mx and my six times the first moments.
+ * signed area, mx and my six times the first moments.  loop_sign gives the
+ * exact sign of a loop's area: 1 counter-clockwise, -1 clockwise.
  */
 struct xsum {
 	double	*h;
@@ -359,6 +361,7 @@ void	 xs_addprod3(struct xsum *, double, double, double);
 void	 xs_addxs(struct xsum *, const struct xsum *, double);
 int	 xs_sign(const struct xsum *);
 double	 xs_round(const struct xsum *);
+int	 loop_sign(const struct point *, size_t);
 void	 mo_init(struct moments *);
 void	 mo_zero(struct moments *);
 void	 mo_edge(struct moments *, struct point, struct point);
@@ -376,7 +379,9 @@ void	 mo_result(const struct moments *, double *, double *, double *);
  * the cell between its corners as qtree(5) defines them.  cut_loops
  * gives the region inside a cell as loops with the region on their left
  * (outer loops counter-clockwise, holes clockwise), their crossings of
- * the cell's sides rounded to doubles alike in the cells on either side.
+ * the cell's sides rounded to doubles alike in the cells on either side.  cut_looprings
+ * says, for each of their points, what the loop runs along from there:
+ * the ring of that number, from 1 in the order added, or (0) the cell.
  */
 struct cutter *cut_new(const struct universe *);
 void	 cut_free(struct cutter *);
@@ -386,5 +391,20 @@ void	 cut_addarea(struct xsum *, const struct universe *,
 	    const struct cell *, double);
 size_t	 cut_loops(struct cutter *, const struct cell *,
 	    const struct point **, const size_t **);
+const size_t *cut_looprings(const struct cutter *);
+
+/*
+ * earclip.c: the triangles of a region given as loops, outer loops
+ * counter-clockwise and holes clockwise inside them (as cut_loops gives
+ * it), with exact orientations: ear_region gives their count and, in
+ * *tri, triples of indices into the loops' points, every triangle
+ * counter-clockwise with positive area, every point a corner; or
+ * (size_t)-1 when the loops are not such a region.  The array is the
+ * earclip's, until the next call.
+ */
+struct earclip *ear_new(void);
+void	 ear_free(struct earclip *);
+size_t	 ear_region(struct earclip *, const struct point *, const size_t *,
+	    size_t, const size_t **);
 
 #endif

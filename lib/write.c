@@ -354,6 +354,22 @@ qt_gridvertex(unsigned long long id, int level, uint64_t ix, uint64_t iy)
 	recorded(p);
 }
 
+/* Mesh vertex id at any point, as the boundary-fitted mesh has them. */
+void
+qt_vertex(unsigned long long id, double x, double y)
+{
+	char *p = room(128);
+
+	memcpy(p, "vertex ", 7);
+	p = putnum(p + 7, &w.vertexid, id);
+	*p++ = ' ';
+	p = fmtreal(p, x);
+	*p++ = ' ';
+	p = fmtreal(p, y);
+	*p++ = '\n';
+	recorded(p);
+}
+
 void
 qt_elem(unsigned long long id, const char *type, size_t n,
     const unsigned long long *v)

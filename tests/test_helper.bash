@@ -25,3 +25,13 @@ leafcounts() {
 	    END { printf "F %d\nE %d\nP %d\n", c["F"], c["E"], c["P"] }' "$@"
 }
 export -f leafcounts
+
+# A python3 that has meshio: Debian's python3-meshio is for /usr/bin/python3,
+# which another python3 may come before on PATH.
+meshio_python() {
+	for p in python3 /usr/bin/python3; do
+		"$p" -c 'import meshio' 2>/dev/null && { echo "$p"; return 0; }
+	done
+	return 1
+}
+export -f meshio_python

@@ -76,18 +76,7 @@ struct shape {
 static int
 clockwise(const struct point *v, size_t n)
 {
-	struct xsum a2;
-	size_t i;
-	int sign;
-
-	xs_init(&a2);
-	for (i = 0; i < n; i++) {
-		xs_addprod(&a2, v[i].x, v[(i + 1) % n].y);
-		xs_addprod(&a2, -v[(i + 1) % n].x, v[i].y);
-	}
-	sign = xs_sign(&a2);
-	xs_free(&a2);
-	return sign < 0;
+	return loop_sign(v, n) < 0;
 }
 
 static void

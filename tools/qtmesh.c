@@ -88,6 +88,12 @@ struct elem {
 	uint32_t	v[4];	/* v[3] == 0 for a triangle */
 };
 
+static int
+nverts(const struct elem *e)
+{
+	return e->v[3] ? 4 : 3;
+}
+
 struct hang {
 	uint32_t	v, a, b;	/* v == 0 until its vertex is numbered */
 	uint64_t	x, y;		/* grid point of v */
@@ -96,6 +102,7 @@ struct hang {
 struct seg {			/* a side on the boundary, a to b */
 	uint32_t	a, b;	/* 0: the midpoint of hang h */
 	uint32_t	h;
+	uint32_t	ring;	/* -b: the ring it runs along, from 1 */
 };
 
 static unsigned keep = CLASSBIT('F') | CLASSBIT('P');
@@ -126,7 +133,7 @@ static size_t npend, pendcap;
 static void
 usage(int help)
 {
-	usageexit(help, "usage: qtmesh [-HhrTv] [-c classes] [-f format] "
+	usageexit(help, "usage: qtmesh [-bHhrTv] [-c classes] [-f format] "
 	    "[-o basename] [file]\n");
 }
 
@@ -497,6 +504,7 @@ addseg(uint32_t a, uint32_t b, uint32_t h)
 	segs[nsegs].a = a;
 	segs[nsegs].b = b;
 	segs[nsegs].h = h;
+	segs[nsegs].ring = 0;
 	nsegs++;
 }
 
@@ -545,6 +553,544 @@ meshleaf(struct leaf *l)
 	}
 }
 
+/*
+ * Boundary-fitted meshes (-b).  Each kept leaf is the region inside it as
+ * loops: a full leaf its square, a partial one its cut pieces (cut_loops).
+ * Along a side that two leaves share both must have the same vertices, so
+ * every loop point on a side of its cell goes into an index of the grid
+ * line it lies on, and each run of a loop along its cell's side takes in
+ * the points of the index between its ends: its own and its neighbours'.
+ * The points compare exactly as doubles: corners are cellcoord's, the same
+ * double at every level, and cut_loops computes where a ring edge crosses
+ * a grid line from the edge and the line alone, so that the cells on
+ * either side get the same double.  A full leaf that takes in no point but
+ * hanging midpoints is meshed by the templates; every other leaf is cut
+ * into triangles by ear_region.
+ */
+struct linept {
+	double	line, pos;	/* x, y on a vertical line; y, x on a level one */
+};
+
+static int bfit;
+static struct cutter *cutter;
+static struct earclip *ear;
+static struct point *lpts;	/* every leaf's loops, one after another */
+static size_t nlpts, lptcap, *lring, lringcap, nlring;	/* lring: see below */
+static size_t *llen, nllen, llencap;
+static size_t *leafloops;	/* leaf i: loops leafloops[i] to [i + 1] */
+static size_t *leafpts;		/* leaf i: its loops' points from here */
+static struct linept *vline, *hline;
+static size_t nvline, nhline, vlinecap, hlinecap;
+static size_t *elstart;		/* leaf i: elements elstart[i] to [i + 1] */
+static struct point *poly;	/* the loops of one leaf, points taken in */
+static size_t npoly, polycap, *plen, nplen, plencap;
+/* per point of lpts and poly: the ring the loop runs along from it, or 0 */
+static size_t *pring, npring, pringcap;
+/* the rings as read, for sides along grid lines */
+static struct point *rpts;
+static size_t nrpts, rptcap, *rlen, nrlen, rlencap;
+
+/* The vertices of -b, any doubles: a table from point to number. */
+static struct bslot {
+	double		x, y;
+	uint32_t	id;	/* 0: free */
+} *btab;
+static size_t btabcap;
+static struct point *bv;	/* vertex i + 1 */
+static size_t nbv, bvcap;
+
+static size_t
+bslot(const struct bslot *tab, size_t cap, double x, double y)
+{
+	uint64_t a, b, h;
+	size_t k;
+
+	memcpy(&a, &x, sizeof(a));
+	memcpy(&b, &y, sizeof(b));
+	h = a * UINT64_C(0x9E3779B97F4A7C15) ^ b * UINT64_C(0xC2B2AE3D27D4EB4F);
+	h ^= h >> 31;
+	for (k = h & (cap - 1); tab[k].id != 0; k = (k + 1) & (cap - 1))
+		if (tab[k].x == x && tab[k].y == y)
+			break;
+	return k;
+}
+
+/* The number of the vertex at (x, y), a new one if none is there yet. */
+static uint32_t
+bvertex(double x, double y)
+{
+	size_t k;
+
+	x += 0.0;	/* -0 is 0: one vertex, one hash */
+	y += 0.0;
+	if (2 * (nbv + 1) > btabcap) {
+		struct bslot *old = btab;
+		size_t i, oldcap = btabcap;
+
+		btabcap = oldcap ? 2 * oldcap : 1024;
+		btab = xcalloc(btabcap, sizeof(*btab));
+		for (i = 0; i < oldcap; i++)
+			if (old[i].id != 0)
+				btab[bslot(btab, btabcap, old[i].x,
+				    old[i].y)] = old[i];
+		free(old);
+	}
+	k = bslot(btab, btabcap, x, y);
+	if (btab[k].id == 0) {
+		bv = grow(bv, &bvcap, nbv, sizeof(*bv));
+		bv[nbv].x = x;
+		bv[nbv].y = y;
+		btab[k].x = x;
+		btab[k].y = y;
+		btab[k].id = ++nbv;
+	}
+	return btab[k].id;
+}
+
+/* Is p in the box of the segment from a to b, closed? */
+static int
+inbox(struct point p, struct point a, struct point b)
+{
+	return (a.x < b.x ? a.x <= p.x && p.x <= b.x : b.x <= p.x &&
+	    p.x <= a.x) && (a.y < b.y ? a.y <= p.y && p.y <= b.y :
+	    b.y <= p.y && p.y <= a.y);
+}
+
+static void
+leafbox(const struct leaf *l, double x[2], double y[2])
+{
+	x[0] = cellcoord(u.x0, u.size, l->level, l->ix);
+	x[1] = cellcoord(u.x0, u.size, l->level, l->ix + 1);
+	y[0] = cellcoord(u.y0, u.size, l->level, l->iy);
+	y[1] = cellcoord(u.y0, u.size, l->level, l->iy + 1);
+}
+
+static void
+addpoint(struct point **a, size_t *n, size_t *cap, double x, double y)
+{
+	*a = grow(*a, cap, *n, sizeof(**a));
+	(*a)[*n].x = x;
+	(*a)[(*n)++].y = y;
+}
+
+static void
+addsize(size_t **a, size_t *n, size_t *cap, size_t v)
+{
+	*a = grow(*a, cap, *n, sizeof(**a));
+	(*a)[(*n)++] = v;
+}
+
+static void
+addlpt(double x, double y, size_t ring)
+{
+	addpoint(&lpts, &nlpts, &lptcap, x, y);
+	addsize(&lring, &nlring, &lringcap, ring);
+}
+
+static void
+addllen(size_t n)
+{
+	addsize(&llen, &nllen, &llencap, n);
+}
+
+static void
+addlinept(struct linept **a, size_t *n, size_t *cap, double line, double pos)
+{
+	*a = grow(*a, cap, *n, sizeof(**a));
+	(*a)[*n].line = line + 0.0;
+	(*a)[(*n)++].pos = pos + 0.0;
+}
+
+static int
+cmplinept(const void *va, const void *vb)
+{
+	const struct linept *a = va, *b = vb;
+
+	if (a->line != b->line)
+		return a->line < b->line ? -1 : 1;
+	return (a->pos > b->pos) - (a->pos < b->pos);
+}
+
+static void
+sortline(struct linept *a, size_t *n)
+{
+	size_t i, w = 0;
+
+	if (*n == 0)
+		return;
+	qsort(a, *n, sizeof(*a), cmplinept);
+	for (i = 0; i < *n; i++)
+		if (w == 0 || cmplinept(&a[w - 1], &a[i]) != 0)
+			a[w++] = a[i];
+	*n = w;
+}
+
+/*
+ * The loops of every kept leaf, checked against the rings, and the index
+ * of their points on the cells' sides.
+ */
+static void
+bfitloops(void)
+{
+	char path[QT_GRID + 2];
+	const struct point *pts;
+	const size_t *len, *ring;
+	struct cell c;
+	double x[2], y[2], frac;
+	size_t i, j, k, n, at;
+	char class;
+
+	leafloops = xreallocarray(NULL, nleaves + 1, sizeof(*leafloops));
+	leafpts = xreallocarray(NULL, nleaves + 1, sizeof(*leafpts));
+	for (i = 0; i < nleaves; i++) {
+		const struct leaf *l = &leaves[i];
+
+		leafloops[i] = nllen;
+		leafpts[i] = nlpts;
+		memset(&c, 0, sizeof(c));
+		c.level = l->level;
+		c.ix = l->ix;
+		c.iy = l->iy;
+		c.class = l->class;
+		c.path = cellpath(path, l->level, l->ix, l->iy);
+		if ((class = cut_cell(cutter, &c, &frac)) != l->class)
+			errat(inname, l->lineno, "leaf %s is %c, but the "
+			    "stream's rings make it %c: the rings are not the "
+			    "tree's", c.path, l->class, class);
+		leafbox(l, x, y);
+		if (l->class == 'F') {
+			addlpt(x[0], y[0], 0);
+			addlpt(x[1], y[0], 0);
+			addlpt(x[1], y[1], 0);
+			addlpt(x[0], y[1], 0);
+			addllen(4);
+		} else {
+			n = cut_loops(cutter, &c, &pts, &len);
+			if (n == (size_t)-1)
+				errat(inname, l->lineno, "leaf %s: the rings do "
+				    "not close round it", c.path);
+			ring = cut_looprings(cutter);
+			for (j = at = 0; j < n; at += len[j++]) {
+				for (k = 0; k < len[j]; k++)
+					addlpt(pts[at + k].x, pts[at + k].y,
+					    ring[at + k]);
+				addllen(len[j]);
+			}
+		}
+	}
+	leafloops[nleaves] = nllen;
+	for (i = 0, at = 0; i < nleaves; i++) {
+		leafbox(&leaves[i], x, y);
+		for (j = leafloops[i]; j < leafloops[i + 1]; at += llen[j++])
+			for (k = at; k < at + llen[j]; k++) {
+				const struct point *p = &lpts[k];
+
+				if (p->x == x[0] || p->x == x[1])
+					addlinept(&vline, &nvline, &vlinecap,
+					    p->x, p->y);
+				if (p->y == y[0] || p->y == y[1])
+					addlinept(&hline, &nhline, &hlinecap,
+					    p->y, p->x);
+			}
+	}
+	sortline(vline, &nvline);
+	sortline(hline, &nhline);
+}
+
+static void
+addpoly(double x, double y, size_t ring)
+{
+	addpoint(&poly, &npoly, &polycap, x, y);
+	addsize(&pring, &npring, &pringcap, ring);
+}
+
+/*
+ * Takes in the points of index a on line strictly between from and to,
+ * in order from from: x = line (vertical) or y = line.
+ */
+static void
+takein(const struct linept *a, size_t n, int vertical, double line,
+    double from, double to)
+{
+	double lo = from < to ? from : to, hi = from < to ? to : from;
+	size_t first = 0, end = n, i, mid;
+
+	while (first < end) {	/* the first point past (line, lo) */
+		mid = first + (end - first) / 2;
+		if (a[mid].line < line || (a[mid].line == line &&
+		    a[mid].pos <= lo))
+			first = mid + 1;
+		else
+			end = mid;
+	}
+	for (end = first; end < n && a[end].line == line && a[end].pos < hi;)
+		end++;
+	for (i = 0; i < end - first; i++) {
+		const struct linept *p = &a[from < to ? first + i :
+		    end - 1 - i];
+
+		if (vertical)
+			addpoly(line, p->pos, 0);
+		else
+			addpoly(p->pos, line, 0);
+	}
+}
+
+/* Element of vertices v[0..n), started from its lowest, then leftmost. */
+static void
+addbelem(const uint32_t *v, int n)
+{
+	struct elem *e;
+	int k, lo = 0;
+
+	for (k = 1; k < n; k++)
+		if (bv[v[k] - 1].y < bv[v[lo] - 1].y || (bv[v[k] - 1].y ==
+		    bv[v[lo] - 1].y && bv[v[k] - 1].x < bv[v[lo] - 1].x))
+			lo = k;
+	elems = grow(elems, &elemcap, nelems, sizeof(*elems));
+	e = &elems[nelems++];
+	e->v[3] = 0;
+	for (k = 0; k < n; k++)
+		e->v[k] = v[(lo + k) % n];
+}
+
+/*
+ * A full leaf whose sides took in nothing but midpoints, by the templates;
+ * 0 when its sides took in other points.
+ */
+static int
+bfittemplate(const struct leaf *l, const double x[2], const double y[2])
+{
+	double px[8], py[8], mx, my;
+	uint32_t v[4];
+	size_t k, at[5];
+	int side, m = 0, i, j;
+
+	if (l->level == QT_GRID)
+		return npoly == 4;
+	mx = cellcoord(u.x0, u.size, l->level + 1, 2 * l->ix + 1);
+	my = cellcoord(u.y0, u.size, l->level + 1, 2 * l->iy + 1);
+	px[0] = px[6] = px[7] = x[0];
+	px[1] = px[5] = mx;
+	px[2] = px[3] = px[4] = x[1];
+	py[0] = py[1] = py[2] = y[0];
+	py[3] = py[7] = my;
+	py[4] = py[5] = py[6] = y[1];
+	/* where the corners are among the points: 0, then 1 or 2, ... */
+	for (k = 0, side = 0; k < npoly && side < 4; k++)
+		if (poly[k].x == px[2 * side] && poly[k].y == py[2 * side])
+			at[side++] = k;
+	at[4] = npoly;
+	for (side = 0; side < 4; side++)
+		if (at[side + 1] - at[side] == 2 && poly[at[side] + 1].x ==
+		    px[2 * side + 1] && poly[at[side] + 1].y == py[2 * side + 1])
+			m |= 1 << side;
+		else if (at[side + 1] - at[side] != 1)
+			return 0;
+	for (i = 0; i < bymask[m].nel; i++) {
+		const struct shape *sh = &bymask[m].el[i];
+
+		for (j = 0; j < sh->n; j++)
+			v[j] = bvertex(px[sh->p[j]], py[sh->p[j]]);
+		addbelem(v, sh->n);
+	}
+	return 1;
+}
+
+/*
+ * Directed sides a -> b of elements, as a table from the pair to a
+ * number: the ring a side runs along, or 1 for every side.
+ */
+struct sidemap {
+	struct sideslot {
+		uint64_t	key;	/* a << 32 | b; 0: free */
+		uint32_t	val;
+	}	*slot;
+	size_t	 cap, n;
+};
+
+static struct sidemap ringsides, allsides;
+
+static size_t
+sideslot(const struct sidemap *m, uint64_t key)
+{
+	uint64_t h = key * UINT64_C(0x9E3779B97F4A7C15);
+	size_t k;
+
+	for (k = (h ^ h >> 29) & (m->cap - 1); m->slot[k].key != 0 &&
+	    m->slot[k].key != key; k = (k + 1) & (m->cap - 1))
+		;
+	return k;
+}
+
+static void
+sideput(struct sidemap *m, uint32_t a, uint32_t b, uint32_t val)
+{
+	uint64_t key = (uint64_t)a << 32 | b;
+	size_t k;
+
+	if (2 * (m->n + 1) > m->cap) {
+		struct sideslot *old = m->slot;
+		size_t i, oldcap = m->cap;
+
+		m->cap = oldcap ? 2 * oldcap : 1024;
+		m->slot = xcalloc(m->cap, sizeof(*m->slot));
+		for (i = 0; i < oldcap; i++)
+			if (old[i].key != 0)
+				m->slot[sideslot(m, old[i].key)] = old[i];
+		free(old);
+	}
+	k = sideslot(m, key);
+	if (m->slot[k].key == 0)
+		m->n++;
+	m->slot[k].key = key;
+	m->slot[k].val = val;
+}
+
+static uint32_t
+sideget(const struct sidemap *m, uint32_t a, uint32_t b)
+{
+	uint64_t key = (uint64_t)a << 32 | b;
+
+	return m->cap == 0 ? 0 : m->slot[sideslot(m, key)].val;
+}
+
+/*
+ * The ring that a boundary side along a grid line runs along: one of its
+ * edges holds both ends, exactly.  0 for none, which the rings of a valid
+ * tree do not leave.
+ */
+static uint32_t
+ringalong(struct point a, struct point b)
+{
+	size_t r, k, at = 0;
+
+	for (r = 0; r < nrlen; at += rlen[r++])
+		for (k = 0; k < rlen[r]; k++) {
+			struct point p = rpts[at + k];
+			struct point q = rpts[at + (k + 1) % rlen[r]];
+
+			if (orient2d(p.x, p.y, q.x, q.y, a.x, a.y) == 0 &&
+			    orient2d(p.x, p.y, q.x, q.y, b.x, b.y) == 0 &&
+			    inbox(a, p, q) && inbox(b, p, q))
+				return r + 1;
+		}
+	return 0;
+}
+
+/*
+ * The sides of one element only, the boundary of the region, each with
+ * its ring: the loop's when a piece of a ring edge gave it, found among
+ * the rings' edges when it runs along a cell's side.
+ */
+static void
+bfitboundary(void)
+{
+	size_t i;
+	uint32_t a, b, ring;
+	int k, n;
+
+	for (i = 0; i < nelems; i++)
+		for (n = nverts(&elems[i]), k = 0; k < n; k++)
+			sideput(&allsides, elems[i].v[k], elems[i].v[(k + 1) % n],
+			    1);
+	for (i = 0; i < nelems; i++)
+		for (n = nverts(&elems[i]), k = 0; k < n; k++) {
+			a = elems[i].v[k];
+			b = elems[i].v[(k + 1) % n];
+			if (sideget(&allsides, b, a) != 0)
+				continue;
+			if ((ring = sideget(&ringsides, a, b)) == 0)
+				ring = ringalong(bv[a - 1], bv[b - 1]);
+			addseg(a, b, 0);
+			segs[nsegs - 1].ring = ring;
+		}
+	free(allsides.slot);
+	free(ringsides.slot);
+}
+
+/* The elements of leaf i: its loops, the points on its sides taken in. */
+static void
+meshbfit(size_t i)
+{
+	const struct leaf *l = &leaves[i];
+	char path[QT_GRID + 2];
+	const size_t *tri;
+	double x[2], y[2];
+	uint32_t v[3];
+	size_t j, k, at, start, ntri;
+
+	leafbox(l, x, y);
+	npoly = nplen = npring = 0;
+	at = leafpts[i];
+	for (j = leafloops[i]; j < leafloops[i + 1]; at += llen[j++]) {
+		start = npoly;
+		for (k = 0; k < llen[j]; k++) {
+			struct point p = lpts[at + k];
+			struct point q = lpts[at + (k + 1) % llen[j]];
+
+			addpoly(p.x, p.y, lring[at + k]);
+			if (p.x == q.x && (p.x == x[0] || p.x == x[1]))
+				takein(vline, nvline, 1, p.x, p.y, q.y);
+			else if (p.y == q.y && (p.y == y[0] || p.y == y[1]))
+				takein(hline, nhline, 0, p.y, p.x, q.x);
+		}
+		plen = grow(plen, &plencap, nplen, sizeof(*plen));
+		plen[nplen++] = npoly - start;
+	}
+	if (l->class == 'F' && bfittemplate(l, x, y))
+		return;
+	ntri = ear_region(ear, poly, plen, nplen, &tri);
+	if (ntri == (size_t)-1)
+		errat(inname, l->lineno, "leaf %s: its part of the region "
+		    "cannot be cut into triangles (rings that cross or touch "
+		    "there?): no mesh written",
+		    cellpath(path, l->level, l->ix, l->iy));
+	for (j = 0; j < ntri; j++) {
+		for (k = 0; k < 3; k++)
+			v[k] = bvertex(poly[tri[3 * j + k]].x,
+			    poly[tri[3 * j + k]].y);
+		addbelem(v, 3);
+	}
+	/* the sides along rings, their vertices numbered by now */
+	for (j = at = 0; j < nplen; at += plen[j++])
+		for (k = 0; k < plen[j]; k++)
+			if (pring[at + k] != 0) {
+				const struct point *p = &poly[at + k];
+				const struct point *q = &poly[at + (k + 1) %
+				    plen[j]];
+
+				sideput(&ringsides, bvertex(p->x, p->y),
+				    bvertex(q->x, q->y), pring[at + k]);
+			}
+}
+
+static void
+bfitmesh(void)
+{
+	size_t i;
+
+	ear = ear_new();
+	bfitloops();
+	elstart = xreallocarray(NULL, nleaves + 1, sizeof(*elstart));
+	for (i = 0; i < nleaves; i++) {
+		elstart[i] = nelems;
+		meshbfit(i);
+	}
+	elstart[nleaves] = nelems;
+	ear_free(ear);
+	cut_free(cutter);
+	if (format != QTREE)
+		bfitboundary();
+}
+
+/* The number of leaf i's elements. */
+static size_t
+leafnel(size_t i)
+{
+	return bfit ? elstart[i + 1] - elstart[i] : leaves[i].nel;
+}
+
 static void
 resolve(void)
 {
@@ -559,12 +1105,6 @@ resolve(void)
 		if (segs[i].b == 0)
 			segs[i].b = hangs[segs[i].h - 1].v;
 	}
-}
-
-static int
-nverts(const struct elem *e)
-{
-	return e->v[3] ? 4 : 3;
 }
 
 /* The largest difference of vertex numbers within an element. */
@@ -790,6 +1330,11 @@ vertexxy(uint32_t id, double *xy)
 {
 	uint64_t x, y;
 
+	if (bfit) {
+		xy[0] = bv[id - 1].x;
+		xy[1] = bv[id - 1].y;
+		return;
+	}
 	corners_point(vt, id, &x, &y);
 	xy[0] = gridcoord(0, x);
 	xy[1] = gridcoord(1, y);
@@ -823,12 +1368,15 @@ writeqtree(size_t nv, const uint32_t *inv)
 		    nextpath(path, &leaves[i - 1], l);
 		c.size = u.size;
 		qt_cell(&c, first);
-		first += l->nel;
+		first += leafnel(i);
 	}
-	for (i = 0; i < nv; i++) {
-		corners_point(vt, inv[i], &x, &y);
-		qt_gridvertex(i + 1, QT_GRID, x, y);
-	}
+	for (i = 0; i < nv; i++)
+		if (bfit)
+			qt_vertex(i + 1, bv[inv[i] - 1].x, bv[inv[i] - 1].y);
+		else {
+			corners_point(vt, inv[i], &x, &y);
+			qt_gridvertex(i + 1, QT_GRID, x, y);
+		}
 	for (i = 0; i < nelems; i++) {
 		for (k = 0; k < nverts(&elems[i]); k++)
 			v[k] = perm[elems[i].v[k] - 1];
@@ -838,6 +1386,28 @@ writeqtree(size_t nv, const uint32_t *inv)
 		qt_hang(perm[hangs[i].v - 1], perm[hangs[i].a - 1],
 		    perm[hangs[i].b - 1]);
 	qt_end();
+}
+
+/*
+ * -b: the rings that boundary sides run along, each a physical group of
+ * lines, "ring N" with tag N, written to fp unless NULL: their count.
+ */
+static size_t
+ringtags(FILE *fp)
+{
+	unsigned char *has = xcalloc(nrlen + 1, 1);
+	size_t i, n = 0;
+
+	for (i = 0; i < nsegs && bfit; i++)
+		if (segs[i].ring != 0 && !has[segs[i].ring]) {
+			has[segs[i].ring] = 1;
+			n++;
+		}
+	for (i = 1; i <= nrlen && fp != NULL; i++)
+		if (has[i])
+			fprintf(fp, "1 %zu \"ring %zu\"\n", i, i);
+	free(has);
+	return n;
 }
 
 static void
@@ -850,11 +1420,12 @@ writemsh(size_t nv, const uint32_t *inv)
 
 	for (i = 0; i < nleaves; i++)
 		tags[classtag(leaves[i].class)] = 1;
-	tags[3] = nsegs > 0;
+	tags[3] = nsegs > 0 && !bfit;
 	printf("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%d\n",
-	    tags[1] + tags[2] + tags[3] + tags[4]);
+	    tags[1] + tags[2] + tags[3] + tags[4] + (int)ringtags(NULL));
 	if (tags[3])
 		printf("1 3 \"boundary\"\n");
+	ringtags(stdout);
 	if (tags[1])
 		printf("2 1 \"full\"\n");
 	if (tags[2])
@@ -870,7 +1441,7 @@ writemsh(size_t nv, const uint32_t *inv)
 	}
 	printf("$EndNodes\n$Elements\n%zu\n", nelems + nsegs);
 	for (i = 0; i < nleaves; i++)
-		for (j = 0; j < leaves[i].nel; j++, e++) {
+		for (j = 0; j < leafnel(i); j++, e++) {
 			n = nverts(&elems[e]);
 			iv[0] = ++id;
 			iv[1] = n == 4 ? 3 : 2;
@@ -884,7 +1455,7 @@ writemsh(size_t nv, const uint32_t *inv)
 		iv[0] = ++id;
 		iv[1] = 1;
 		iv[2] = 2;
-		iv[3] = iv[4] = 3;
+		iv[3] = iv[4] = bfit ? segs[i].ring : 3;
 		iv[5] = perm[segs[i].a - 1];
 		iv[6] = perm[segs[i].b - 1];
 		putline(stdout, iv, 7, NULL, 0, "");
@@ -897,7 +1468,7 @@ writevtk(size_t nv, const uint32_t *inv)
 {
 	long long iv[5];
 	double xy[3];
-	size_t i, j, e, nref = 0;
+	size_t i, j, e, nref = 0, nline;
 	int k, n, pass;
 
 	printf("# vtk DataFile Version 3.0\nqtmesh\nASCII\n"
@@ -909,7 +1480,8 @@ writevtk(size_t nv, const uint32_t *inv)
 	}
 	for (i = 0; i < nelems; i++)
 		nref += 1 + nverts(&elems[i]);
-	printf("CELLS %zu %zu\n", nelems, nref);
+	nline = bfit ? nsegs : 0;	/* -b: the boundary as lines, type 3 */
+	printf("CELLS %zu %zu\n", nelems + nline, nref + 3 * nline);
 	for (i = 0; i < nelems; i++) {
 		n = nverts(&elems[i]);
 		iv[0] = n;
@@ -917,17 +1489,28 @@ writevtk(size_t nv, const uint32_t *inv)
 			iv[1 + k] = perm[elems[i].v[k] - 1] - 1;
 		putline(stdout, iv, 1 + n, NULL, 0, "");
 	}
-	printf("CELL_TYPES %zu\n", nelems);
+	for (i = 0; i < nline; i++) {
+		iv[0] = 2;
+		iv[1] = perm[segs[i].a - 1] - 1;
+		iv[2] = perm[segs[i].b - 1] - 1;
+		putline(stdout, iv, 3, NULL, 0, "");
+	}
+	printf("CELL_TYPES %zu\n", nelems + nline);
 	for (i = 0; i < nelems; i++)
 		printf("%d\n", nverts(&elems[i]) == 4 ? 9 : 5);
-	printf("CELL_DATA %zu\n", nelems);
-	for (pass = 0; pass < 2; pass++) {
+	for (i = 0; i < nline; i++)
+		printf("3\n");
+	printf("CELL_DATA %zu\n", nelems + nline);
+	for (pass = 0; pass < (bfit ? 3 : 2); pass++) {
 		printf("SCALARS %s int 1\nLOOKUP_TABLE default\n",
-		    pass ? "level" : "class");
+		    pass == 2 ? "ring" : pass ? "level" : "class");
 		for (i = e = 0; i < nleaves; i++)
-			for (j = 0; j < leaves[i].nel; j++, e++)
-				printf("%d\n", pass ? leaves[i].level :
-				    classtag(leaves[i].class));
+			for (j = 0; j < leafnel(i); j++, e++)
+				printf("%d\n", pass == 2 ? 0 : pass ?
+				    leaves[i].level : classtag(leaves[i].class));
+		for (i = 0; i < nline; i++)
+			printf("%lu\n", pass == 2 ?
+			    (unsigned long)segs[i].ring : 0UL);
 	}
 }
 
@@ -957,27 +1540,43 @@ writetriangle(size_t nv, const uint32_t *inv)
 {
 	long long iv[5];
 	double xy[2];
-	char *name, *onb;
+	char *name, tail[32];
+	uint32_t *onb;
 	FILE *fp;
 	size_t i, j, e;
 	int k;
 
-	onb = xmalloc(nv + 1);
-	memset(onb, 0, nv + 1);
+	onb = xcalloc(nv + 1, sizeof(*onb));
 	for (i = 0; i < nsegs; i++)
-		onb[perm[segs[i].a - 1]] = onb[perm[segs[i].b - 1]] = 1;
+		onb[perm[segs[i].a - 1]] = onb[perm[segs[i].b - 1]] =
+		    bfit ? segs[i].ring : 1;
 	fp = create(".node", &name);
 	fprintf(fp, "%zu 2 0 1\n", nv);
 	for (i = 0; i < nv; i++) {
 		vertexxy(inv[i], xy);
 		iv[0] = i + 1;
-		putline(fp, iv, 1, xy, 2, onb[i + 1] ? " 1" : " 0");
+		tail[0] = ' ';
+		fmtint(tail + 1, onb[i + 1]);
+		putline(fp, iv, 1, xy, 2, tail);
 	}
 	finish(fp, name);
+	if (bfit) {	/* -b: the boundary's sides, marked by ring */
+		fp = create(".poly", &name);
+		fprintf(fp, "0 2 0 1\n%zu 1\n", nsegs);
+		for (i = 0; i < nsegs; i++) {
+			iv[0] = i + 1;
+			iv[1] = perm[segs[i].a - 1];
+			iv[2] = perm[segs[i].b - 1];
+			iv[3] = segs[i].ring;
+			putline(fp, iv, 4, NULL, 0, "");
+		}
+		fprintf(fp, "0\n");
+		finish(fp, name);
+	}
 	fp = create(".ele", &name);
 	fprintf(fp, "%zu 3 1\n", nelems);
 	for (i = e = 0; i < nleaves; i++)
-		for (j = 0; j < leaves[i].nel; j++, e++) {
+		for (j = 0; j < leafnel(i); j++, e++) {
 			iv[0] = e + 1;
 			for (k = 0; k < 3; k++)
 				iv[1 + k] = perm[elems[e].v[k] - 1];
@@ -1011,11 +1610,14 @@ main(int argc, char *argv[])
 	enum qtkind kind;
 	uint32_t *inv, bw0 = 0;
 	size_t i, nv;
-	int ch, head;
+	int ch, head, cflag = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "HTc:f:o:rvh")) != -1)
+	while ((ch = getopt(argc, argv, "HTbc:f:o:rvh")) != -1)
 		switch (ch) {
+		case 'b':
+			bfit = 1;
+			break;
 		case 'H':
 			conform = 0;
 			break;
@@ -1024,6 +1626,7 @@ main(int argc, char *argv[])
 			break;
 		case 'c':
 			keep = optclasses(optarg);
+			cflag = 1;
 			break;
 		case 'f':
 			format = formatname(optarg);
@@ -1047,12 +1650,17 @@ main(int argc, char *argv[])
 	if ((format == TRIANGLE) != (outbase != NULL))
 		die(2, format == TRIANGLE ? "-f triangle needs -o basename" :
 		    "-o is for -f triangle only");
+	if (bfit && (!conform || cflag))
+		die(2, "-b meshes the region, from the F and P leaves: not "
+		    "with %s", cflag ? "-c" : "-H");
 	if (format == TRIANGLE)
 		alltri = 1;
 	inittemplates();
 
 	fp = openin(argc == 1 ? argv[0] : "-", &inname);
-	r = qt_open(fp, inname, QT_NEEDUNIVERSE | QT_ARCS | (verbose ? QT_VERBOSE : 0));
+	/* cut cells are clipped by straight edges only (lib/cut.c) */
+	r = qt_open(fp, inname, QT_NEEDUNIVERSE | (bfit ? 0 : QT_ARCS) |
+	    (verbose ? QT_VERBOSE : 0));
 	head = format == QTREE;
 	if (head)
 		qt_header();
@@ -1060,6 +1668,8 @@ main(int argc, char *argv[])
 		switch (kind) {
 		case QT_UNIVERSE:
 			u = rec.u;
+			if (bfit)
+				cutter = cut_new(&rec.u);
 			if (head)
 				qt_universe(&rec.u);
 			break;
@@ -1068,8 +1678,22 @@ main(int argc, char *argv[])
 				qt_level(rec.level);
 			break;
 		case QT_RING:
+			if (bfit) {
+				cut_addring(cutter, &rec.ring);
+				for (i = 0; i < rec.ring.n; i++)
+					addpoint(&rpts, &nrpts, &rptcap,
+					    rec.ring.v[i].x, rec.ring.v[i].y);
+				addsize(&rlen, &nrlen, &rlencap, rec.ring.n);
+			}
 			if (head)
 				qt_ring(&rec.ring);
+			break;
+		case QT_OBJECT:
+			if (bfit)
+				qt_fail(r, "-b: the cells of a combined stream "
+				    "are not those of its rings");
+			if (head)
+				qt_echo(&rec);
 			break;
 		case QT_NODE:
 			break;
@@ -1099,11 +1723,16 @@ main(int argc, char *argv[])
 	for (i = 0; i < nleaves; i++)
 		sides(i);
 	cellset_free(set);
-	vt = corners_new(1);
-	for (i = 0; i < nleaves; i++)
-		meshleaf(&leaves[i]);
-	resolve();
-	nv = corners_count(vt);
+	if (bfit) {
+		bfitmesh();
+		nv = nbv;
+	} else {
+		vt = corners_new(1);
+		for (i = 0; i < nleaves; i++)
+			meshleaf(&leaves[i]);
+		resolve();
+		nv = corners_count(vt);
+	}
 	perm = xreallocarray(NULL, nv + 1, sizeof(*perm));
 	for (i = 0; i < nv; i++)
 		perm[i] = i + 1;
