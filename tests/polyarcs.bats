@@ -1,5 +1,5 @@
 #!/usr/bin/env bats
-# polyread's arcs: the xy arc line read into qtree(5) a
+# polyread's arcs: the xy arc line and WKT curves read into qtree(5) a
 # records, checked against the samples written by hand, and the checks of
 # arcs, each expected fault worked out by hand or by tests/arccheck.py
 # (crossing points in decimals to 60 digits, no code shared with
@@ -149,4 +149,76 @@ body() {
 	done
 	# most cases decide something
 	[ "$n" -ge 35 ]
+}
+
+@test "wkt: a CURVEPOLYGON of a square and a circle of two arcs is samples/plate-hole.qt" {
+	echo 'CURVEPOLYGON((0 0, 4 0, 4 4, 0 4, 0 0), CIRCULARSTRING(3 2, 2 1, 1 2, 2 3, 3 2))' > p.wkt
+	polyread p.wkt > got
+	body "$SAMPLES/plate-hole.qt" > want
+	diff -u want got
+}
+
+@test "wkt: a COMPOUNDCURVE of a LINESTRING and a CIRCULARSTRING is the semicircle" {
+	echo 'CURVEPOLYGON(COMPOUNDCURVE(CIRCULARSTRING(1 0, 0 1, -1 0), (-1 0, 1 0)))' > s.wkt
+	polyread s.wkt > got
+	body "$SAMPLES/semicircle-arc.qt" > want
+	diff -u want got
+	echo 'CURVEPOLYGON(COMPOUNDCURVE(LINESTRING(-1 0, 1 0), CIRCULARSTRING(1 0, 0 1, -1 0)))' > s2.wkt
+	polyread s2.wkt | awk '$1 == "a"' > got2
+	echo 'a 0 1' > want2
+	diff -u want2 got2
+}
+
+@test "wkt: a full circle, three points with the first repeated, becomes two arcs through the quarter points" {
+	# by hand: the circle with the diameter (3 2)-(1 2) has the centre
+	# (2 2); a quarter turn from (3 2) counter-clockwise is (2 3), the
+	# first arc's point, clockwise (2 1), the second's: the ring runs
+	# counter-clockwise and stays as it is
+	echo 'CURVEPOLYGON(CIRCULARSTRING(3 2, 1 2, 3 2))' > c.wkt
+	polyread c.wkt | awk '$1 == "v" || $1 == "a"' > got
+	printf 'v 3 2\na 2 3\nv 1 2\na 2 1\n' > want
+	diff -u want got
+	# a diameter whose quarter points are not doubles is refused
+	echo 'CURVEPOLYGON(CIRCULARSTRING(0 0, 0.1 0.3, 0 0))' > n.wkt
+	run -1 --separate-stderr polyread n.wkt
+	[[ "$stderr" == *"full circle whose points a quarter turn from the two given are not doubles"* ]]
+}
+
+@test "wkt: MULTISURFACE of a CURVEPOLYGON and a POLYGON, an annulus beside a square" {
+	echo 'MULTISURFACE(CURVEPOLYGON(CIRCULARSTRING(4 2, 2 4, 0 2, 2 0, 4 2), CIRCULARSTRING(3 2, 2 1, 1 2, 2 3, 3 2)), ((5 0, 6 0, 6 1, 5 1, 5 0)))' > m.wkt
+	polyread m.wkt | awk '$1 == "ring" { print $3, $4 }' > got
+	printf 'outer 4\nhole 4\nouter 4\n' > want
+	diff -u want got
+}
+
+@test "wkt: a CIRCULARSTRING of an even number of points, a hole outside its shell, are refused" {
+	echo 'CURVEPOLYGON(CIRCULARSTRING(0 0, 1 1, 2 0, 0 0))' > e.wkt
+	run -1 --separate-stderr polyread e.wkt
+	[[ "$stderr" == *"a CIRCULARSTRING has an odd number of points, at least 3: 4"* ]]
+	echo 'CURVEPOLYGON(CIRCULARSTRING(3 2, 2 1, 1 2, 2 3, 3 2), CIRCULARSTRING(13 2, 12 1, 11 2, 12 3, 13 2))' > h.wkt
+	run -1 --separate-stderr polyread h.wkt
+	[[ "$stderr" == *"hole ring 2 lies outside its shell"* ]]
+}
+
+@test "wkt: GDAL reads the same curves to the same area, when ogrinfo is installed" {
+	command -v ogrinfo > /dev/null || skip "ogrinfo (gdal-bin) is not installed"
+	echo 'CURVEPOLYGON(COMPOUNDCURVE((0 0, 4 0, 4 4), CIRCULARSTRING(4 4, 2 5, 0 4), (0 4, 0 0)), CIRCULARSTRING(3 2, 2 1, 1 2, 2 3, 3 2))' > g.wkt
+	polyread g.wkt | qtstats > st
+	ours=$(awk '$1 == "polygon_area" { print $2 }' st)
+	printf 'id,wkt\n1,"%s"\n' "$(cat g.wkt)" > g.csv
+	theirs=$(ogrinfo -q -dialect SQLite -sql 'SELECT ST_Area(GEOMETRY) AS a FROM g' \
+	    -oo GEOM_POSSIBLE_NAMES=wkt -oo KEEP_GEOM_COLUMNS=NO g.csv 2>/dev/null |
+	    awk '$1 == "a" { print $4 }')
+	[ -n "$theirs" ] || skip "ogrinfo's SQLite dialect gave no area"
+	# by hand: the square, the circular segment over its top (centre
+	# (2, 5/2), r = 5/2, half-angle atan2(2, 3/2)), less the unit hole;
+	# GDAL's ST_Area takes chords, so it agrees to 1e-3
+	python3 - "$ours" "$theirs" <<-'PY'
+	import math, sys
+	ours, theirs = map(float, sys.argv[1:])
+	th = 2 * math.atan2(2, 1.5)
+	exact = 16 + 2.5 ** 2 * (th - math.sin(th)) / 2 - math.pi
+	assert abs(ours - exact) < 1e-12 * exact, (ours, exact)
+	assert abs(ours - theirs) < 1e-3 * exact, (ours, theirs)
+	PY
 }

@@ -35,7 +35,7 @@ static int
 longlines(const struct src *s)
 {
 	static const char *const words[] = { "POLYGON", "MULTIPOLYGON",
-	    "SRID" };
+	    "SRID", "CURVEPOLYGON", "MULTISURFACE" };
 	const char *p = s->buf, *end = s->buf + s->len;
 	size_t i, n;
 
