@@ -34,7 +34,7 @@ lib/libqtree.a: $(LIBOBJ)
 POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
 	tools/polyread/brep.o tools/polyread/xy.o tools/polyread/wkt.o \
 	tools/polyread/poly.o tools/polyread/csv.o tools/polyread/geojson.o \
-	tools/polyread/valid.o tools/polyread/sweep.o
+	tools/polyread/valid.o tools/polyread/sweep.o tools/polyread/curve.o
 $(BIN): lib/libqtree.a
 polyread: $(POLYREADOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(POLYREADOBJ) lib/libqtree.a $(LDLIBS)

@@ -12,7 +12,8 @@
  * its rounding error, so no rounding mode is changed and underflow and
  * overflow only widen it), and when the interval holds 0, exactly, in
  * integers: a coordinate within QT_COORD_MIN..QT_COORD_MAX is an integer
- * times 2^-BIGSHIFT, and the products of six such integers fit BIGN limbs.
+ * times 2^-BIGSHIFT, and the products of eight such integers fit BIGN
+ * limbs (polyread's line tests are of degree 8, qtsplit's of 6).
  *
  * The arc is the part of its circle on M's side of the chord line AB, with
  * A and B.  So a point p lies inside the circular segment (the region
@@ -22,13 +23,14 @@
  */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "qtree.h"
 
 /* Integers of at most BIGN 32-bit limbs, sign and magnitude. */
 #define BIGSHIFT	400
-#define BIGN		150
+#define BIGN		220
 
 struct big {
 	int		 neg, n;	/* n limbs, the top one nonzero */
@@ -691,4 +693,235 @@ arc_measures(const struct arc *a, struct arcmeasures *g)
 		t = 4 * r * s * s * s / (3 * tms) - r * cos(al);
 	g->gx = a->a.x + bx / 2 + t * nx;
 	g->gy = a->a.y + by / 2 + t * ny;
+}
+
+/*
+ * Why three points make no arc, or NULL when they do, in the messages of
+ * every reader of arcs; record names what gives an arc in the input.
+ */
+const char *
+arc_defect(struct point a, struct point m, struct point b, const char *record)
+{
+	static char msg[96];
+
+	if (orient2d(a.x, a.y, b.x, b.y, m.x, m.y) != 0)
+		return NULL;
+	if (a.x == b.x && a.y == b.y && a.x == m.x && a.y == m.y)
+		return "arc of zero radius: its three points are one";
+	if (a.x == b.x && a.y == b.y)
+		return "arc from a vertex back to itself (a circle is two arcs)";
+	if ((m.x == a.x && m.y == a.y) || (m.x == b.x && m.y == b.y))
+		return "arc's middle point is one of its ends";
+	snprintf(msg, sizeof(msg), "arc through three points on a line (a "
+	    "straight edge needs no %s)", record);
+	return msg;
+}
+
+/* big = (a - b) . (c - d) or cross (a - b) x (c - d), from doubles */
+static void
+big_dot(struct big *z, const struct big *ux, const struct big *uy,
+    const struct big *vx, const struct big *vy, int cross)
+{
+	struct big t;
+
+	big_mul(z, ux, cross ? vy : vx);
+	big_mul(&t, uy, cross ? vx : vy);
+	big_addsub(z, z, &t, cross ? -1 : 1);
+}
+
+/* The sign of cross(b - a, d - c): which way the direction c->d turns. */
+int
+crossdir(struct point a, struct point b, struct point c, struct point d)
+{
+	struct interval w = iv_sub(iv_mul(iv_diff(b.x, a.x), iv_diff(d.y,
+	    c.y)), iv_mul(iv_diff(b.y, a.y), iv_diff(d.x, c.x)));
+	struct big ux, uy, vx, vy, z;
+	int s;
+
+	if ((s = iv_sign(w)) != 0)
+		return s;
+	big_diff(&ux, b.x, a.x);
+	big_diff(&uy, b.y, a.y);
+	big_diff(&vx, d.x, c.x);
+	big_diff(&vy, d.y, c.y);
+	big_dot(&z, &ux, &uy, &vx, &vy, 1);
+	return big_sign(&z);
+}
+
+/*
+ * The sign of (C - p) . (q - p): whether the foot of the centre on the
+ * line p->q lies ahead of p.  Times 2D: 2D (A - p) . d + U . d, d = q - p.
+ */
+int
+arc_dotcentre(const struct arc *a, struct point p, struct point q)
+{
+	struct interval dx = iv_diff(q.x, p.x), dy = iv_diff(q.y, p.y);
+	struct interval w = iv_add(iv_scale(iv_mul(a->id, iv_add(iv_mul(
+	    iv_diff(a->a.x, p.x), dx), iv_mul(iv_diff(a->a.y, p.y), dy))), 2),
+	    iv_add(iv_mul(a->iux, dx), iv_mul(a->iuy, dy)));
+	struct bigarc z;
+	struct big ex, ey, bdx, bdy, t, u;
+	int s;
+
+	if ((s = iv_sign(w)) != 0)
+		return s * a->sd;
+	bigarc(a, &z);
+	big_diff(&ex, a->a.x, p.x);
+	big_diff(&ey, a->a.y, p.y);
+	big_diff(&bdx, q.x, p.x);
+	big_diff(&bdy, q.y, p.y);
+	big_dot(&t, &ex, &ey, &bdx, &bdy, 0);
+	big_mul(&t, &t, &z.d);
+	big_addsub(&t, &t, &t, 1);
+	big_dot(&u, &z.ux, &z.uy, &bdx, &bdy, 0);
+	big_addsub(&t, &t, &u, 1);
+	return big_sign(&t) * a->sd;
+}
+
+/*
+ * The sign of (C - X) . d, d = q - p, X where the line p->q meets the
+ * chord's line, the two not parallel.  With o0 = cross(B - A, p - A) and
+ * k = -cross(B - A, d), X = p + (o0 / k) d, and times 2D k:
+ * (2D (A - p) . d + U . d) k - 2D o0 |d|^2.
+ */
+int
+arc_dotcentrecut(const struct arc *a, struct point p, struct point q)
+{
+	struct interval dx = iv_diff(q.x, p.x), dy = iv_diff(q.y, p.y);
+	struct interval ex = iv_diff(a->a.x, p.x), ey = iv_diff(a->a.y, p.y);
+	struct interval e, k, o0, w, zero = { 0, 0 };
+	struct bigarc z;
+	struct big bex, bey, bdx, bdy, bk, bo, t, u;
+	int s;
+
+	e = iv_add(iv_scale(iv_mul(a->id, iv_add(iv_mul(ex, dx),
+	    iv_mul(ey, dy))), 2), iv_add(iv_mul(a->iux, dx),
+	    iv_mul(a->iuy, dy)));
+	k = iv_sub(iv_mul(a->iby, dx), iv_mul(a->ibx, dy));
+	o0 = iv_sub(zero, iv_sub(iv_mul(a->ibx, ey), iv_mul(a->iby, ex)));
+	w = iv_sub(iv_mul(e, k), iv_scale(iv_mul(iv_mul(a->id, o0),
+	    iv_add(iv_mul(dx, dx), iv_mul(dy, dy))), 2));
+	if ((s = iv_sign(w)) != 0 && iv_sign(k) != 0)
+		return s * iv_sign(k) * a->sd;
+	bigarc(a, &z);
+	big_diff(&bex, a->a.x, p.x);
+	big_diff(&bey, a->a.y, p.y);
+	big_diff(&bdx, q.x, p.x);
+	big_diff(&bdy, q.y, p.y);
+	big_dot(&t, &bex, &bey, &bdx, &bdy, 0);
+	big_mul(&t, &t, &z.d);
+	big_addsub(&t, &t, &t, 1);
+	big_dot(&u, &z.ux, &z.uy, &bdx, &bdy, 0);
+	big_addsub(&t, &t, &u, 1);		/* e */
+	big_dot(&bk, &z.by, &z.bx, &bdy, &bdx, 1);	/* by dx - bx dy */
+	big_mul(&t, &t, &bk);
+	big_dot(&bo, &z.bx, &z.by, &bex, &bey, 1);	/* -o0 */
+	big_mul(&bo, &bo, &z.d);
+	big_dot(&u, &bdx, &bdy, &bdx, &bdy, 0);
+	big_mul(&bo, &bo, &u);
+	big_addsub(&t, &t, &bo, 1);
+	big_addsub(&t, &t, &bo, 1);
+	return big_sign(&t) * big_sign(&bk) * a->sd;
+}
+
+/*
+ * The sign of dist(C, line p->q)^2 - r^2: whether the line misses the
+ * circle (1), touches it (0) or cuts it (-1).  Times 4 D^2 |d|^2:
+ * (2D cross(d, A - p) + cross(d, U))^2 - |U|^2 |d|^2.
+ */
+int
+arc_linepower(const struct arc *a, struct point p, struct point q)
+{
+	struct interval dx = iv_diff(q.x, p.x), dy = iv_diff(q.y, p.y);
+	struct interval ex = iv_diff(a->a.x, p.x), ey = iv_diff(a->a.y, p.y);
+	struct interval c, w;
+	struct bigarc z;
+	struct big bex, bey, bdx, bdy, t, u;
+	int s;
+
+	c = iv_add(iv_scale(iv_mul(a->id, iv_sub(iv_mul(dx, ey), iv_mul(dy,
+	    ex))), 2), iv_sub(iv_mul(dx, a->iuy), iv_mul(dy, a->iux)));
+	w = iv_sub(iv_mul(c, c), iv_mul(iv_add(iv_mul(a->iux, a->iux),
+	    iv_mul(a->iuy, a->iuy)), iv_add(iv_mul(dx, dx), iv_mul(dy, dy))));
+	if ((s = iv_sign(w)) != 0)
+		return s;
+	bigarc(a, &z);
+	big_diff(&bex, a->a.x, p.x);
+	big_diff(&bey, a->a.y, p.y);
+	big_diff(&bdx, q.x, p.x);
+	big_diff(&bdy, q.y, p.y);
+	big_dot(&t, &bdx, &bdy, &bex, &bey, 1);
+	big_mul(&t, &t, &z.d);
+	big_addsub(&t, &t, &t, 1);
+	big_dot(&u, &bdx, &bdy, &z.ux, &z.uy, 1);
+	big_addsub(&t, &t, &u, 1);
+	big_mul(&t, &t, &t);
+	big_dot(&u, &z.ux, &z.uy, &z.ux, &z.uy, 0);
+	big_dot(&bex, &bdx, &bdy, &bdx, &bdy, 0);
+	big_mul(&u, &u, &bex);
+	big_addsub(&t, &t, &u, -1);
+	return big_sign(&t);
+}
+
+/*
+ * The sign of cross(v - C2, v - C1), C1 and C2 the centres of a1 and a2:
+ * 0 when the circles through v are tangent there.  Times 4 D1 D2:
+ * cross(2 D2 (v - A2) - U2, 2 D1 (v - A1) - U1).
+ */
+int
+arc_tangentcross(const struct arc *a1, const struct arc *a2, struct point v)
+{
+	struct interval w1x, w1y, w2x, w2y, w;
+	struct bigarc z1, z2;
+	struct big p1x, p1y, p2x, p2y, t;
+	int s;
+
+	w1x = iv_sub(iv_scale(iv_mul(a1->id, iv_diff(v.x, a1->a.x)), 2),
+	    a1->iux);
+	w1y = iv_sub(iv_scale(iv_mul(a1->id, iv_diff(v.y, a1->a.y)), 2),
+	    a1->iuy);
+	w2x = iv_sub(iv_scale(iv_mul(a2->id, iv_diff(v.x, a2->a.x)), 2),
+	    a2->iux);
+	w2y = iv_sub(iv_scale(iv_mul(a2->id, iv_diff(v.y, a2->a.y)), 2),
+	    a2->iuy);
+	w = iv_sub(iv_mul(w2x, w1y), iv_mul(w2y, w1x));
+	if ((s = iv_sign(w)) != 0)
+		return s * a1->sd * a2->sd;
+	bigarc(a1, &z1);
+	bigarc(a2, &z2);
+	big_diff(&p1x, v.x, a1->a.x);
+	big_mul(&p1x, &p1x, &z1.d);
+	big_addsub(&p1x, &p1x, &p1x, 1);
+	big_addsub(&p1x, &p1x, &z1.ux, -1);
+	big_diff(&p1y, v.y, a1->a.y);
+	big_mul(&p1y, &p1y, &z1.d);
+	big_addsub(&p1y, &p1y, &p1y, 1);
+	big_addsub(&p1y, &p1y, &z1.uy, -1);
+	big_diff(&p2x, v.x, a2->a.x);
+	big_mul(&p2x, &p2x, &z2.d);
+	big_addsub(&p2x, &p2x, &p2x, 1);
+	big_addsub(&p2x, &p2x, &z2.ux, -1);
+	big_diff(&p2y, v.y, a2->a.y);
+	big_mul(&p2y, &p2y, &z2.d);
+	big_addsub(&p2y, &p2y, &p2y, 1);
+	big_addsub(&p2y, &p2y, &z2.uy, -1);
+	big_dot(&t, &p2x, &p2y, &p1x, &p1y, 1);
+	return big_sign(&t) * a1->sd * a2->sd;
+}
+
+/*
+ * The sign of f at p + e (t - p), e > 0 infinitesimal, t != p: f(p), or
+ * when p is on the circle the sign of 2 (p - C) . (t - p), or when that is
+ * 0 too (t - p along the tangent) that of |t - p|^2.
+ */
+int
+arc_powertoward(const struct arc *a, struct point p, struct point t)
+{
+	int s;
+
+	if ((s = arc_power(a, p.x, p.y)) != 0)
+		return s;
+	if ((s = arc_dotcentre(a, p, t)) != 0)
+		return -s;
+	return 1;
 }

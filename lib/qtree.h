@@ -96,6 +96,25 @@ int	 arc_insegment(const struct arc *, double, double, int, int);
 int	 arc_meets(const struct arc *, double, double, double, double,
 	    const signed char[4], const signed char[4]);
 
+/*
+ * For polyread's checks: arc_defect says why three points make no arc, or
+ * NULL; crossdir gives the sign of cross(b - a, d - c); arc_dotcentre that
+ * of (C - p) . (q - p), arc_dotcentrecut that of (C - X) . (q - p) for X
+ * where the line p->q meets the chord's line (not parallel to it),
+ * arc_linepower that of dist(C, line pq)^2 - r^2, arc_tangentcross that of
+ * cross(v - C2, v - C1), arc_powertoward that of the power at p + e(t -
+ * p), e > 0 infinitesimal.
+ */
+const char *arc_defect(struct point, struct point, struct point,
+	    const char *);
+int	 crossdir(struct point, struct point, struct point, struct point);
+int	 arc_dotcentre(const struct arc *, struct point, struct point);
+int	 arc_dotcentrecut(const struct arc *, struct point, struct point);
+int	 arc_linepower(const struct arc *, struct point, struct point);
+int	 arc_tangentcross(const struct arc *, const struct arc *,
+	    struct point);
+int	 arc_powertoward(const struct arc *, struct point, struct point);
+
 /* The measures of an arc and its circular segment, in floating point. */
 struct arcmeasures {
 	double	r, theta;	/* radius, central angle (0, 2 pi) */

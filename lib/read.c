@@ -665,18 +665,10 @@ static void
 checkarc(struct qtreader *r, size_t i, size_t j, long line)
 {
 	const struct ring *g = &r->ring;
-	struct point a = g->v[i], m = g->mid[i], b = g->v[j];
+	const char *why = arc_defect(g->v[i], g->mid[i], g->v[j], "a record");
 
-	if (orient2d(a.x, a.y, b.x, b.y, m.x, m.y) != 0)
-		return;
-	if (a.x == b.x && a.y == b.y && a.x == m.x && a.y == m.y)
-		errat(r->name, line, "arc of zero radius: its three points "
-		    "are one");
-	if (a.x == b.x && a.y == b.y)
-		errat(r->name, line, "arc from a vertex back to itself (a "
-		    "circle is two arcs)");
-	errat(r->name, line, "arc through three points on a line (a "
-	    "straight edge needs no a record)");
+	if (why != NULL)
+		errat(r->name, line, "%s", why);
 }
 
 /*

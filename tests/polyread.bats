@@ -205,7 +205,7 @@ ring 3 outer 4" ]
 	run -0 polyread t.txt
 	[ "${lines[2]}" = "ring 1 outer 3" ]
 	run -1 --separate-stderr polyread -f wkt t.txt
-	[ "$stderr" = "polyread: t.txt:1: expected POLYGON or MULTIPOLYGON: 0" ]
+	[ "$stderr" = "polyread: t.txt:1: expected POLYGON, MULTIPOLYGON, CURVEPOLYGON or MULTISURFACE: 0" ]
 	run -2 --separate-stderr polyread -f shp t.txt
 	[[ "$stderr" == "polyread: -f: unknown format shp"* ]]
 }
@@ -465,7 +465,7 @@ ring 3 hole 3" ]
 	# a line of names before no numbers is still taken for WKT
 	printf 'x y\n' > word.txt
 	run -1 --separate-stderr polyread word.txt
-	[[ "$stderr" == "polyread: word.txt:1: expected POLYGON or MULTIPOLYGON: x (read as wkt: "* ]]
+	[[ "$stderr" == "polyread: word.txt:1: expected POLYGON, MULTIPOLYGON, CURVEPOLYGON or MULTISURFACE: x (read as wkt: "* ]]
 }
 
 @test "csv: x,y lines, a header line and blanks around the comma, read as xy" {

@@ -90,5 +90,5 @@ csvpair(struct src *s, const char *q, const char *eol, double *x, double *y)
 void
 parsecsv(struct src *s, struct input *in)
 {
-	parselines(s, in, csvheader, csvpair);
+	parselines(s, in, csvheader, csvpair, 0);
 }

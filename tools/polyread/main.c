@@ -161,7 +161,9 @@ writestream(const struct input *in, const struct universe *u, int level)
 		out.hole = r->depth % 2;
 		out.n = r->n;
 		out.v = r->v;
-		out.narcs = 0;
+		out.narcs = r->narcs;
+		out.arc = r->arc;
+		out.mid = r->mid;
 		qt_ring(&out);
 	}
 	qt_end();

@@ -4,11 +4,20 @@
 
 enum role { UNKNOWN = -1, OUTER = 0, HOLE = 1 };
 
+/*
+ * A ring's edge i runs from v[i] to the next vertex; when arc is not NULL
+ * and arc[i] is set, it is the arc through mid[i], given at midline[i].
+ */
 struct inring {
 	const char	*file;
 	long		*line;		/* input line of each vertex */
 	struct point	*v;
 	size_t		 n, cap;
+	unsigned char	*arc;		/* NULL while the ring has no arc */
+	struct point	*mid;
+	long		*midline;
+	size_t		 narcs, narccap;
+	struct arc	*arcs;		/* arcs[i] for arc[i], once checked */
 	long		 firstline;
 	int		 role;		/* as declared, or UNKNOWN */
 	long		 poly;		/* declared polygon, for wkt */
@@ -87,6 +96,8 @@ long long integer(struct src *, const char *, long long, long long);
 void	 expectmore(struct src *, long long, long long, const char *);
 struct inring *newring(struct input *, const char *, long, int, long);
 void	 addvertex(struct input *, struct inring *, double, double, long);
+void	 addarc(struct input *, struct inring *, double, double, long);
+void	 growarcs(struct inring *);
 void	 addseed(struct input *, const char *, long, double, double);
 void	 freeinput(struct input *);
 
@@ -97,7 +108,7 @@ int	 isxy(const struct src *);
 void	 parsexy(struct src *, struct input *);
 void	 parselines(struct src *, struct input *, int (*)(struct src *),
 	    void (*)(struct src *, const char *, const char *, double *,
-	    double *));
+	    double *), int);
 int	 isname(const char *);
 const char *nextdata(const char *, long *);
 int	 xyheader(const char *);
@@ -111,8 +122,14 @@ int	 isgeojson(const struct src *);
 void	 parsegeojson(struct src *, struct input *);
 void	 choosefeature(const char *);
 
-/* valid.c: each ring alone, roles and connectivity, universe, orientation */
+/*
+ * valid.c: each ring alone, roles and connectivity, universe, orientation;
+ * pairfail fails on edge i of one ring and edge j of another (counted from
+ * 0), which cross, overlap or touch at a point.
+ */
 long	 ringno(const struct input *, const struct inring *);
+void	 pairfail(const struct input *, size_t, size_t, size_t, size_t,
+	    const char *, struct point);
 void	 checkrings(struct input *);
 void	 checknesting(const struct input *, const struct touch *, size_t);
 void	 defaultuniverse(const struct input *, struct universe *);
@@ -120,5 +137,20 @@ void	 checkuniverse(const struct input *, const struct universe *,
 	    const char *);
 void	 orientrings(struct input *);
 
-/* sweep.c: no two edges cross or overlap; where rings touch; nesting */
+/*
+ * sweep.c: no two edges cross or overlap; where rings touch; nesting.
+ * addtouch records that two rings touch at a point, taketouches hands the
+ * points over.
+ */
 struct touch *checkedges(struct input *, size_t *);
+void	 addtouch(long, long, struct point);
+struct touch *taketouches(size_t *);
+
+/*
+ * curve.c: the same for inputs with arcs, by pairs of edges whose boxes
+ * meet, and nesting by containment; curvecontains says whether a point
+ * not on the ring lies inside it.
+ */
+int	 hasarcs(const struct input *);
+struct touch *checkcurves(struct input *, size_t *);
+int	 curvecontains(const struct inring *, struct point);

@@ -35,7 +35,7 @@ static int
 longlines(const struct src *s)
 {
 	static const char *const words[] = { "POLYGON", "MULTIPOLYGON",
-	    "SRID" };
+	    "SRID", "CURVEPOLYGON", "MULTISURFACE" };
 	const char *p = s->buf, *end = s->buf + s->len;
 	size_t i, n;
 
@@ -281,6 +281,23 @@ newring(struct input *in, const char *file, long line, int role, long poly)
 	return r;
 }
 
+/*
+ * Room for the arcs of the ring's vertices and of one more, the new ones
+ * none: addvertex leaves the arcs alone, and checkrings calls this once
+ * the ring is read, so that a ring without arcs costs nothing.
+ */
+void
+growarcs(struct inring *r)
+{
+	size_t cap = r->cap > r->n + 1 ? r->cap : r->n + 1, old = r->narccap;
+
+	r->arc = xreallocarray(r->arc, cap, sizeof(*r->arc));
+	r->mid = xreallocarray(r->mid, cap, sizeof(*r->mid));
+	r->midline = xreallocarray(r->midline, cap, sizeof(*r->midline));
+	memset(r->arc + old, 0, cap - old);
+	r->narccap = cap;
+}
+
 void
 addvertex(struct input *in, struct inring *r, double x, double y, long line)
 {
@@ -299,6 +316,34 @@ addvertex(struct input *in, struct inring *r, double x, double y, long line)
 	r->line[r->n++] = line;
 	if ((++in->nvertices & 0xfffff) == 0 && verbose)
 		progress(0, "%llu vertices read", in->nvertices);
+}
+
+/*
+ * The point (x, y) on an arc from the ring's last vertex to the vertex
+ * after it, or to the first when none follows.
+ */
+void
+addarc(struct input *in, struct inring *r, double x, double y, long line)
+{
+	(void)in;
+	if (isnan(x) || isnan(y) || isinf(x) || isinf(y))
+		readerr(r->file, line, "coordinate is not a finite number");
+	if (!coordok(x) || !coordok(y))
+		readerr(r->file, line, "coordinate outside the supported range "
+		    "(0, or 1e-100 to 1e100 in magnitude)");
+	if (r->n == 0)
+		readerr(r->file, line, "an arc must follow a vertex: a ring "
+		    "starts at a vertex");
+	if (r->arc == NULL || r->narccap < r->n)
+		growarcs(r);
+	if (r->arc[r->n - 1])
+		readerr(r->file, line, "two arcs in a row: a vertex must come "
+		    "between them");
+	r->arc[r->n - 1] = 1;
+	r->mid[r->n - 1].x = x;
+	r->mid[r->n - 1].y = y;
+	r->midline[r->n - 1] = line;
+	r->narcs++;
 }
 
 void
@@ -321,6 +366,10 @@ freeinput(struct input *in)
 	for (i = 0; i < in->nrings; i++) {
 		free(in->rings[i].v);
 		free(in->rings[i].line);
+		free(in->rings[i].arc);
+		free(in->rings[i].mid);
+		free(in->rings[i].midline);
+		free(in->rings[i].arcs);
 	}
 	free(in->rings);
 	free(in->seeds);

@@ -72,19 +72,11 @@ edgeno(uint32_t k)
 static void
 edgefail(uint32_t ke, uint32_t kf, const char *what, struct point p)
 {
-	const struct inring *r = &rings[edges[ke].ring],
-	    *q = &rings[edges[kf].ring];
-	size_t i = edgeno(ke), j = edgeno(kf);
-	char px[32], py[32];
-
-	fmtreal(px, p.x);
-	fmtreal(py, p.y);
-	errat(r->file, r->line[i], "ring %ld edge %zu (line %ld) %s ring %ld "
-	    "edge %zu (line %ld) at %s %s", ringno(in, r), i + 1, r->line[i],
-	    what, ringno(in, q), j + 1, q->line[j], px, py);
+	pairfail(in, edges[ke].ring, edgeno(ke), edges[kf].ring, edgeno(kf),
+	    what, p);
 }
 
-static void
+void
 addtouch(long a, long b, struct point p)
 {
 	if (ntouches == touchcap) {
@@ -94,6 +86,18 @@ addtouch(long a, long b, struct point p)
 	touches[ntouches].ring[0] = a < b ? a : b;
 	touches[ntouches].ring[1] = a < b ? b : a;
 	touches[ntouches++].p = p;
+}
+
+/* The touches recorded, for the caller to free; the list starts anew. */
+struct touch *
+taketouches(size_t *n)
+{
+	struct touch *t = touches;
+
+	*n = ntouches;
+	touches = NULL;
+	ntouches = touchcap = 0;
+	return t;
 }
 
 static int
@@ -820,9 +824,10 @@ sweep(uint32_t n)
 struct touch *
 checkedges(struct input *input, size_t *ntouch)
 {
-	struct touch *t;
 	size_t i, j, n = 0;
 
+	if (hasarcs(input))
+		return checkcurves(input, ntouch);
 	in = input;
 	rings = input->rings;
 	first = xreallocarray(NULL, in->nrings + 1, sizeof(*first));
@@ -860,9 +865,5 @@ checkedges(struct input *input, size_t *ntouch)
 	first = NULL;
 	free(ccw);
 	ccw = NULL;
-	t = touches;
-	*ntouch = ntouches;
-	touches = NULL;
-	ntouches = touchcap = 0;
-	return t;
+	return taketouches(ntouch);
 }

@@ -1,6 +1,8 @@
 /*
  * xy.c: one vertex "x y" a line, rings separated by a blank line; roles
- * follow from nesting.  The first line may name the columns.
+ * follow from nesting.  The first line may name the columns.  A line
+ * "arc x y" between two vertices makes the edge between them the arc
+ * through (x, y); after the last, the edge back to the first.
  */
 #include <ctype.h>
 #include <stdio.h>
@@ -115,12 +117,13 @@ xypair(struct src *s, const char *q, const char *eol, double *x, double *y)
 /*
  * Line by line, not token by token: a line break means something here.
  * For xy and csv: the first line of data is skipped when header says it
- * names the columns, and pair reads the vertex on each line of data.
+ * names the columns, and pair reads the vertex on each line of data, or
+ * with arcs set, the point after the word arc.
  */
 void
 parselines(struct src *s, struct input *in, int (*header)(struct src *),
     void (*pair)(struct src *, const char *, const char *, double *,
-    double *))
+    double *), int arcs)
 {
 	struct inring *r = NULL;
 	char *p = s->buf, *eol;
@@ -152,6 +155,17 @@ parselines(struct src *s, struct input *in, int (*header)(struct src *),
 		s->line = line;
 		/* A comment may follow the vertex on its line. */
 		end = memchr(q, '#', (size_t)(eol - q));
+		/* a vertex starts with a digit, a sign or a point */
+		if (arcs && *q == 'a' && strncmp(q, "arc", 3) == 0 &&
+		    (q[3] == ' ' || q[3] == '\t')) {
+			q += 3 + strspn(q + 3, " \t");
+			pair(s, q, end != NULL ? end : eol, &x, &y);
+			if (r == NULL)
+				readerr(s->name, line, "an arc must follow a "
+				    "vertex: a ring starts at a vertex");
+			addarc(in, r, x, y, line);
+			continue;
+		}
 		pair(s, q, end != NULL ? end : eol, &x, &y);
 		if (r == NULL)
 			r = newring(in, s->name, line, UNKNOWN, -1);
@@ -162,5 +176,5 @@ parselines(struct src *s, struct input *in, int (*header)(struct src *),
 void
 parsexy(struct src *s, struct input *in)
 {
-	parselines(s, in, xyheader1, xypair);
+	parselines(s, in, xyheader1, xypair, 1);
 }
