@@ -222,3 +222,10 @@ body() {
 	assert abs(ours - theirs) < 1e-3 * exact, (ours, theirs)
 	PY
 }
+
+@test "samples/curves/semicircle-arc.xy reads to samples/semicircle-arc.qt" {
+	# kept out of samples/*.xy, which the straight-edge tests loop over
+	polyread "$SAMPLES/curves/semicircle-arc.xy" > got
+	body "$SAMPLES/semicircle-arc.qt" > want
+	diff -u want got
+}
