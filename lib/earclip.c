@@ -322,12 +322,56 @@ addtri(struct earclip *ec, size_t a, size_t b, size_t c)
 	ec->ntri++;
 }
 
+/*
+ * The sine of the smallest angle of triangle a, b, c, twice its area over
+ * the two longer sides: how far from a sliver it is.
+ */
+static double
+fatness(const struct point *a, const struct point *b, const struct point *c)
+{
+	double ab = hypot(b->x - a->x, b->y - a->y);
+	double bc = hypot(c->x - b->x, c->y - b->y);
+	double ca = hypot(a->x - c->x, a->y - c->y);
+	double area2 = fabs((b->x - a->x) * (c->y - a->y) -
+	    (b->y - a->y) * (c->x - a->x));
+	double lo = ab < bc ? (ab < ca ? ab : ca) : (bc < ca ? bc : ca);
+
+	return area2 * lo / (ab * bc * ca);
+}
+
+/*
+ * Up to this many points a loop is cut greedily, the fattest ear first
+ * (each round looks at every vertex); larger loops take the first ear.
+ */
+#define GREEDY	200
+
 /* Cuts the loop through node k into ears; -1 when it finds none. */
 static int
 clip(struct earclip *ec, size_t k, size_t n)
 {
-	size_t stall = 0;
+	size_t stall = 0, j, best;
+	double q, bq;
 
+	while (n > 3 && n <= GREEDY) {
+		best = SIZE_MAX;
+		bq = -1;
+		j = k;
+		do {
+			if (isear(ec, j) && (q = fatness(P(ec->prev[j]), P(j),
+			    P(ec->next[j]))) > bq) {
+				bq = q;
+				best = j;
+			}
+			j = ec->next[j];
+		} while (j != k);
+		if (best == SIZE_MAX)
+			return -1;
+		addtri(ec, ec->prev[best], best, ec->next[best]);
+		ec->next[ec->prev[best]] = ec->next[best];
+		ec->prev[ec->next[best]] = ec->prev[best];
+		k = ec->prev[best];
+		n--;
+	}
 	while (n > 3) {
 		if (isear(ec, k)) {
 			size_t a = ec->prev[k], c = ec->next[k];

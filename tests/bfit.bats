@@ -95,6 +95,38 @@ area2='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	[ "$(awk "$sides" mesh.qt)" = "$(awk 'BEGIN { printf "10 %.12f\n", 8 + 4 * sqrt(2) }')" ]
 }
 
+@test "a partial leaf beside finer full leaves takes in their midpoint: its triangle cut in two" {
+	# the triangle of the first test, leaf 0 split into four full leaves
+	# by hand: leaf 1's piece (1,0) (2,0) (1,1) takes in (1,0.5) on its
+	# west side, a vertex of leaves 01 and 03; with (1,0) (1,0.5) (1,1) in
+	# a line, the one way to cut it joins (1,0.5) to (2,0)
+	cat > tree.qt <<-'EOF'
+	qtree 1
+	universe 0 0 2
+	level 2
+	ring 1 outer 3
+	v 0 0
+	v 2 0
+	v 0 2
+	node . 0 0 0 0 0 2
+	node 0 1 0 0 0 0 1
+	leaf 00 2 0 0 0 0 0.5 F
+	leaf 01 2 1 0 0.5 0 0.5 F
+	leaf 02 2 0 1 0 0.5 0.5 F
+	leaf 03 2 1 1 0.5 0.5 0.5 F
+	leaf 1 1 1 0 1 0 1 P
+	leaf 2 1 0 1 0 1 1 P
+	leaf 3 1 1 1 1 1 1 E
+	end 15
+	EOF
+	qtmesh -b tree.qt > mesh.qt
+	awk '$1 == "vertex" { p[$2] = $3 "," $4 } $1 == "elem" && $3 == "tri" {
+	    s = $3; for (k = 4; k <= NF; k++) s = s " " p[$k]; print s }' mesh.qt > got
+	printf '%s\n' 'tri 1,0 2,0 1,0.5' 'tri 2,0 1,1 1,0.5' \
+	    'tri 0,1 0.5,1 0,2' 'tri 0.5,1 1,1 0,2' | diff -u - got
+	[ "$(grep -c '^elem [0-9]* quad ' mesh.qt)" = 4 ]
+}
+
 @test "an unbalanced tree is refused as in conforming mode, without an end record" {
 	run -1 --separate-stderr bash -c 'polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 | qtmesh -b'
 	[[ "$stderr" == "qtmesh: stdin:"[0-9]*": leaf "*"not 2:1 balanced"* ]]
@@ -380,4 +412,34 @@ print(ring.get(("line", 1), 0), ring.get(("line", 2), 0), ring.get(("line", 0), 
 	    END { exit bad }' m.poly m.node
 	# and the triangles are those of -T
 	awk 'NR > 1 { print "elem", $1, "tri", $2, $3, $4 }' m.ele | diff -u <(grep '^elem ' mesh.qt) -
+}
+
+@test "qtstats gives the -b mesh's smallest angle and largest aspect ratio, as python computes them" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 | qtbalance | qtmesh -b > mesh.qt
+	qtstats mesh.qt | awk '$1 == "smallest_angle" || $1 == "largest_aspect_ratio"' > got
+	[ "$(wc -l < got)" = 2 ]
+	# angles by the law of cosines, sides by hypot: another formula
+	python3 - mesh.qt got <<-'PY'
+	import math, sys
+	v, lo, hi = {}, 180.0, 1.0
+	for l in open(sys.argv[1]):
+	    w = l.split()
+	    if w[0] == 'vertex':
+	        v[w[1]] = (float(w[2]), float(w[3]))
+	    elif w[0] == 'elem':
+	        p = [v[i] for i in w[3:]]
+	        n = len(p)
+	        s = [math.dist(p[i], p[(i + 1) % n]) for i in range(n)]
+	        for i in range(n):
+	            a, b = s[i - 1], s[i]
+	            c = math.dist(p[i - 1], p[(i + 1) % n])
+	            cos = (a * a + b * b - c * c) / (2 * a * b)
+	            lo = min(lo, math.degrees(math.acos(max(-1, min(1, cos)))))
+	        hi = max(hi, max(s) / min(s))
+	got = dict(l.split() for l in open(sys.argv[2]))
+	ok = (abs(float(got['smallest_angle']) - lo) <= 1e-9 * max(lo, 1e-3) and
+	      abs(float(got['largest_aspect_ratio']) - hi) <= 1e-12 * hi)
+	print(got, lo, hi)
+	sys.exit(0 if ok else 1)
+	PY
 }
