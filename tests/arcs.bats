@@ -248,3 +248,12 @@ print("%.14g" % (3 * math.pi))' > want
 	qtbalance c.qt | qtmesh | grep -c '^a ' | diff <(echo 2) -
 	qtbool -o and c.qt c.qt | grep -c '^a ' | diff <(echo 4) -
 }
+
+@test "tools/benchcircle.sh gives the circle's and the 64-gon's instructions a cell and a verdict" {
+	command -v valgrind > /dev/null || skip "valgrind is not installed"
+	cd "$TOP"
+	run -0 sh tools/benchcircle.sh 5
+	[ "${#lines[@]}" -eq 2 ]
+	[[ "${lines[0]}" == "# circle as arcs, level 5: "*" cells, "*" instructions a cell; 64-gon: "* ]]
+	[[ "${lines[1]}" == "qtsplit: circle as 2 arcs <= 64-gon, instructions/cell "*" "@(PASS|FAIL) ]]
+}
