@@ -343,6 +343,9 @@ arc_init(struct arc *a, struct point pa, struct point pm, struct point pb)
 	a->iuy = iv_sub(iv_mul(a->ibx, m2), iv_mul(a->imx, b2));
 	a->oc = arc_centreside(a);
 	filter(a);
+	/* a centre on doubles, as most circles given by hand have it */
+	a->exactc[0] = coordok(a->cx) && arc_cmpcentre(a, 0, a->cx) == 0;
+	a->exactc[1] = coordok(a->cy) && arc_cmpcentre(a, 1, a->cy) == 0;
 	/*
 	 * The box: A, B and those of the circle's extreme points C +- (r, 0),
 	 * C +- (0, r) that the arc may hold, from the enclosures of C and r:
@@ -374,6 +377,31 @@ arc_init(struct arc *a, struct point pa, struct point pm, struct point pb)
 	return 0;
 }
 
+/*
+ * The power at (x, y) when the centre is (cx, cy) exactly: the sign of
+ * |p - C|^2 - |A - C|^2 = x^2 - 2 x cx + y^2 - 2 y cy - (the same at A),
+ * a sum of products of doubles (2x is exact), in an expansion.
+ */
+static int
+powerat(const struct arc *a, double x, double y)
+{
+	struct xsum t;
+	int s;
+
+	xs_init(&t);
+	xs_addprod(&t, x, x);
+	xs_addprod(&t, -2 * x, a->cx);
+	xs_addprod(&t, y, y);
+	xs_addprod(&t, -2 * y, a->cy);
+	xs_addprod(&t, -a->a.x, a->a.x);
+	xs_addprod(&t, 2 * a->a.x, a->cx);
+	xs_addprod(&t, -a->a.y, a->a.y);
+	xs_addprod(&t, 2 * a->a.y, a->cy);
+	s = xs_sign(&t);
+	xs_free(&t);
+	return s;
+}
+
 /* The sign of f at (x, y): -1 inside the circle, 0 on it, 1 outside. */
 int
 arc_power(const struct arc *a, double x, double y)
@@ -394,6 +422,8 @@ arc_power(const struct arc *a, double x, double y)
 	    iv_add(iv_mul(px, a->iux), iv_mul(py, a->iuy)));
 	if ((s = iv_sign(v)) != 0)
 		return s * a->sd;
+	if (a->exactc[0] && a->exactc[1])
+		return powerat(a, x, y);
 	bigarc(a, &z);
 	big_diff(&bx, x, a->a.x);
 	big_diff(&by, y, a->a.y);
@@ -422,6 +452,11 @@ arc_cmpcentre(const struct arc *a, int axis, double v)
 	struct big b, t;
 	int s;
 
+	if (a->exactc[axis]) {
+		double c = axis ? a->cy : a->cx;
+
+		return (v > c) - (v < c);
+	}
 	if ((s = iv_sign(w)) != 0)
 		return s * a->sd;
 	bigarc(a, &z);
@@ -647,6 +682,28 @@ arc_meets(const struct arc *a, double x0, double y0, double x1, double y1,
 	if (oz == 0)
 		oz = pos ? 1 : -1;	/* K on one side of the line */
 	return oz == a->sd;
+}
+
+/*
+ * Whether the closed box [x0, x1] x [y0, y1] lies surely outside the
+ * circle, its nearest point farther from C than r, or surely inside, its
+ * farthest corner nearer: the filter of arc_power, on distances to the
+ * box.
+ */
+int
+arc_boxoff(const struct arc *a, double x0, double y0, double x1, double y1)
+{
+	/* comparisons, not fmax, which libm does not inline */
+	double l = a->cx - x0, r = x1 - a->cx, b = a->cy - y0, t = y1 - a->cy;
+	double nx = (l < 0 ? -l : r < 0 ? -r : 0) - a->ec;
+	double ny = (b < 0 ? -b : t < 0 ? -t : 0) - a->ec;
+	double fx = (l > r ? l : r) + a->ec, fy = (b > t ? b : t) + a->ec;
+
+	nx = nx > 0 ? nx : 0;
+	ny = ny > 0 ? ny : 0;
+	if ((nx * nx + ny * ny) * (1 - 0x1p-40) > a->tout + 0x1p-1000)
+		return 1;
+	return (fx * fx + fy * fy) * (1 + 0x1p-40) + 0x1p-1000 < a->tin;
 }
 
 /*

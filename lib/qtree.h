@@ -71,6 +71,8 @@ int	 ring_contains(const struct point *, size_t, struct point,
  * an open box, given its corners' orientations against a->b and powers
  * (lower left, lower right, upper left, upper right); arc_insegment
  * whether (x, y) + (d, d^2), d > 0 infinitesimal, lies in the segment.
+ * arc_boxoff says, from the filter alone, that a closed box lies surely
+ * outside the circle or surely inside it, so that the arc misses it.
  * The box is conservative: the arc lies strictly inside it.
  */
 struct interval {
@@ -85,6 +87,7 @@ struct arc {
 	double		 xmin, ymin, xmax, ymax;
 	/* the filter: C within ec of (cx, cy); r^2 in (tin, tout) */
 	double		 cx, cy, ec, tin, tout;
+	int		 exactc[2];	/* C's x, y is cx, cy exactly */
 };
 int	 arc_init(struct arc *, struct point, struct point, struct point);
 int	 arc_power(const struct arc *, double, double);
@@ -95,6 +98,7 @@ int	 arc_centreside(const struct arc *);
 int	 arc_insegment(const struct arc *, double, double, int, int);
 int	 arc_meets(const struct arc *, double, double, double, double,
 	    const signed char[4], const signed char[4]);
+int	 arc_boxoff(const struct arc *, double, double, double, double);
 
 /*
  * For polyread's checks: arc_defect says why three points make no arc, or

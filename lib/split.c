@@ -265,7 +265,9 @@ arcchildren(const struct splitter *sp, const struct edge *e,
 	for (q = 0; q < 4; q++) {
 		int i = q & 1, j = q >> 1;
 
-		if (!inx[i] || !iny[j])
+		/* a child the circle surely misses needs no corner */
+		if (!inx[i] || !iny[j] || arc_boxoff(a, gx[i], gy[j],
+		    gx[i + 1], gy[j + 1]))
 			continue;
 		for (c = 0; c < 4; c++) {
 			int gi = i + (c & 1), gj = j + (c >> 1), g = 3 * gj + gi;

@@ -248,3 +248,25 @@ print("%.14g" % (3 * math.pi))' > want
 	qtbalance c.qt | qtmesh | grep -c '^a ' | diff <(echo 2) -
 	qtbool -o and c.qt c.qt | grep -c '^a ' | diff <(echo 4) -
 }
+
+@test "tools/benchcircle.sh gives the circle's and the 64-gon's instructions a cell and a verdict" {
+	command -v valgrind > /dev/null || skip "valgrind is not installed"
+	cd "$TOP"
+	run -0 sh tools/benchcircle.sh 5
+	[ "${#lines[@]}" -eq 2 ]
+	[[ "${lines[0]}" == "# circle as arcs, level 5: "*" cells, "*" instructions a cell; 64-gon: "* ]]
+	[[ "${lines[1]}" == "qtsplit: circle as 2 arcs <= 64-gon, instructions/cell "*" "@(PASS|FAIL) ]]
+}
+
+@test "qtmesh meshes the plate with a hole: with -H one quad a full or partial leaf" {
+	# the leaves cut by the hole's arcs are P leaves like any other; the
+	# count of F and P leaves comes from qtleaves, by awk, not from qtmesh
+	qtsplit -l 5 "$SAMPLES/plate-hole.qt" | qtbalance > t.qt
+	qtmesh -H t.qt > m.qt
+	qtleaves t.qt | awk '$1 == "leaf" && ($9 == "F" || $9 == "P")' | wc -l > want
+	awk '$1 == "elem"' m.qt | wc -l > got
+	diff -u want got
+	# and every element is a quad of four vertices
+	run -0 awk '$1 == "elem" && ($3 != "quad" || NF != 7)' m.qt
+	[ -z "$output" ]
+}

@@ -6,7 +6,8 @@
 # (elements/s in the cells_per_s column) and qtbalance on the level-16
 # amoeba (leaves/s and peak RSS a leaf), print a table and the targets of
 # issue 3 (and 17's of qtcat, 10's of qtmesh and qtbalance, 16's of
-# qt2svg, 11's of polyread) with their figures, and draw samples/bench.svg.
+# qt2svg, 11's of polyread, 12's of arcs, by tools/benchcircle.sh) with
+# their figures, and draw samples/bench.svg.
 #
 #   make && sh tools/bench.sh	(from the project root; `make bench` does it)
 #
@@ -640,6 +641,9 @@ if [ -s "$tmp/svglake" ]; then
 			    $5 >= 1e7 && $3 < 102400 ? "PASS" : "FAIL")
 	}' "$tmp/svglake"
 fi
+
+# issue 12: the circle as arcs against the 64-gon, instructions a cell
+sh tools/benchcircle.sh
 
 if [ -n "$svg" ]; then
 	note="sh tools/bench.sh, $(date -u '+%Y-%m-%d'), $(uname -m),"
