@@ -517,6 +517,8 @@ touching(long a, long b)
 {
 	struct touch key;
 
+	if (ntouches == 0)	/* bsearch and qsort want an array */
+		return 0;
 	key.ring[0] = a < b ? a : b;
 	key.ring[1] = a < b ? b : a;
 	return bsearch(&key, touches, ntouches, sizeof(*touches),
@@ -531,7 +533,8 @@ nesting(struct input *input)
 	size_t nr = input->nrings, i, j, npairs = 0, cap = 0;
 	size_t (*holds)[2] = NULL;
 
-	qsort(touches, ntouches, sizeof(*touches), cmptouch);
+	if (ntouches > 0)
+		qsort(touches, ntouches, sizeof(*touches), cmptouch);
 	for (i = 0; i < nr; i++) {
 		rings[i].depth = 0;
 		rings[i].parent = -1;
