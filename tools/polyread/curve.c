@@ -49,18 +49,6 @@ static struct touch *touches;		/* sorted, for nesting */
 static size_t ntouches;
 
 static int
-samepoint(struct point a, struct point b)
-{
-	return a.x == b.x && a.y == b.y;
-}
-
-static int
-orient(struct point a, struct point b, struct point c)
-{
-	return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
-}
-
-static int
 before(struct point a, struct point b)
 {
 	return a.x < b.x || (a.x == b.x && a.y < b.y);

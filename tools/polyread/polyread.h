@@ -154,3 +154,16 @@ struct touch *taketouches(size_t *);
 int	 hasarcs(const struct input *);
 struct touch *checkcurves(struct input *, size_t *);
 int	 curvecontains(const struct inring *, struct point);
+
+/* The sweep's and the curve checks' shorthands for points. */
+static inline int
+samepoint(struct point a, struct point b)
+{
+	return a.x == b.x && a.y == b.y;
+}
+
+static inline int
+orient(struct point a, struct point b, struct point c)
+{
+	return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
+}

@@ -101,18 +101,6 @@ taketouches(size_t *n)
 }
 
 static int
-samepoint(struct point a, struct point b)
-{
-	return a.x == b.x && a.y == b.y;
-}
-
-static int
-orient(struct point a, struct point b, struct point c)
-{
-	return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
-}
-
-static int
 adjacent(uint32_t ke, uint32_t kf)
 {
 	const struct edge *e = &edges[ke], *f = &edges[kf];
