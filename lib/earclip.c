@@ -181,6 +181,45 @@ clear(struct earclip *ec, const size_t *heads, size_t nh,
 }
 
 /*
+ * Joins hole heads[j] into the outer loop at a vertex they share, when
+ * they do (a hole touching its cell's side from inside): the loop goes
+ * into the hole there and round it, back to a copy of that vertex, so
+ * that each visit of the point has its own angle of the region.  A bridge
+ * to elsewhere would leave the two visits' angles overlapping, a loop no
+ * ear can be cut from.  Returns 0 when it joined, -1 when no vertex is
+ * shared.
+ */
+static int
+splice(struct earclip *ec, size_t *heads, size_t *nh, size_t j)
+{
+	size_t k = heads[j], o, o2, kn, kp, on;
+
+	do {
+		kn = ec->next[k];
+		kp = ec->prev[k];
+		o = heads[0];
+		do {
+			if (same(P(o), P(k)) && inwedge(ec, o, P(kn)) &&
+			    inwedge(ec, o, P(kp))) {
+				on = ec->next[o];
+				o2 = newnode(ec, ec->vid[o]);
+				ec->next[o] = kn;
+				ec->prev[kn] = o;
+				ec->next[kp] = o2;
+				ec->prev[o2] = kp;
+				ec->next[o2] = on;
+				ec->prev[on] = o2;
+				heads[j] = heads[--*nh];
+				return 0;
+			}
+			o = ec->next[o];
+		} while (o != heads[0]);
+		k = kn;
+	} while (k != heads[j]);
+	return -1;
+}
+
+/*
  * Joins hole heads[j] into the outer loop heads[0] by a bridge from its
  * rightmost vertex; heads[1..nh) are the holes of that outer loop.
  */
@@ -458,6 +497,10 @@ ear_region(struct earclip *ec, const struct point *v, const size_t *len,
 			n += len[j] + 2;
 			placed++;
 		}
+		/* a spliced hole's point is in the loop twice, not 4 times */
+		for (j = nh - 1; j >= 1; j--)
+			if (splice(ec, heads, &nh, j) == 0)
+				n -= 2;
 		while (nh > 1 && !fail) {	/* rightmost hole first */
 			size_t b = 1, k;
 			double bx = -HUGE_VAL;

@@ -269,11 +269,46 @@ bfitcheck() {
 	    if (d < 0) d = -d; exit d > 1e-12 * want }'
 }
 
+# An L whose bottom side has a vertex at (1,0), universe [0,4]^2, level 1:
+#
+#   4 9----8
+#     | F  |
+#   2 3----5----7     leaves 0, 1, 2 full, 3 empty; (1,0) lies on the
+#     |   /|    |     universe's side, the side of leaf 0 only: leaf 0
+#     | /  | F  |     is cut into 3 triangles at it, leaves 1 and 2 stay
+#   0 1-2--4----6     quads.  9 vertices, 5 elements, 9 boundary sides
+#     0 1  2    4     (bottom 3, right 1, the step 2, top 1, left 2),
+#                       16 long.
+@test "a ring vertex on a full leaf's side is a mesh vertex (worked by hand)" {
+	printf '0 0\n1 0\n4 0\n4 2\n2 2\n2 4\n0 4\n' |
+	    polyread -u 0,0,4 | qtsplit -l 1 | qtmesh -b > mesh.qt
+	run -0 awk '$1 == "vertex" && $3 == 1 && $4 == 0 { v++ }
+	    $1 == "vertex" { n++ } $1 == "elem" { e[$3]++ }
+	    END { print n, v, e["tri"], e["quad"] }' mesh.qt
+	[ "$output" = "9 1 3 2" ]
+	run -0 awk "$sides" mesh.qt
+	[ "$output" = "9 16.000000000000" ]
+	run -0 awk "$area2" mesh.qt
+	[ "$output" = 24 ]
+	bfitcheck mesh.qt
+}
+
+# The hole (4,2) (2,3) (2,1) touches the right side of leaf 0, [0,4]^2 at
+# level 1 in [0,8]^2, from inside: the leaf's region is one loop pinched
+# at (4,2).  Area 64 - 2; boundary 32 plus the hole's 2 + 2 sqrt 5.
+@test "a hole touching its cell's side from inside is meshed" {
+	printf '0 0\n8 0\n8 8\n0 8\n\n4 2\n2 3\n2 1\n' | polyread |
+	    qtsplit -l 1 | qtmesh -b > mesh.qt
+	run -0 awk "$area2" mesh.qt
+	[ "$output" = 124 ]
+	run -0 awk "$sides" mesh.qt
+	awk -v got="${output#* }" 'BEGIN { d = got - (34 + 2 * sqrt(5))
+	    exit d > 1e-12 || d < -1e-12 }'
+	bfitcheck mesh.qt
+}
+
 @test "real polygons from ../shared/data mesh exactly at levels 4 and 6" {
 	need_shared
-	# triangle/double_hex.xy is left out: its square carries vertices
-	# along the universe's sides, which the sides of full leaves do not
-	# take in (a known limit of -b; at level 2 qtmesh -b refuses it)
 	n=0
 	for f in "$SHARED"/countries/*.xy "$SHARED"/lakes/*.xy; do
 		for l in 4 6; do
@@ -284,6 +319,16 @@ bfitcheck() {
 		n=$((n + 1))
 	done
 	[ "$n" -gt 0 ]
+}
+
+@test "double_hex: vertices along the universe's sides, holes touching cells' sides, levels 2 to 6" {
+	need_shared
+	f=$SHARED/triangle/double_hex.xy
+	[ -f "$f" ] || skip "$f is absent"
+	for l in 2 3 4 5 6; do
+		polyread "$f" | qtsplit -l $l | qtbalance | qtmesh -b > mesh.qt
+		bfitcheck mesh.qt > check || { echo "level $l:"; cat check; return 1; }
+	done
 }
 
 # The length of the boundary lines by tag, from a .msh, and each ring's

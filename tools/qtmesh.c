@@ -793,6 +793,15 @@ bfitloops(void)
 					    p->y, p->x);
 			}
 	}
+	/*
+	 * A ring vertex on the side of a full leaf is on no cut loop when
+	 * the ring runs along that side (the cell across is empty, or off
+	 * the universe): indexed here, the full leaf takes it in as well.
+	 */
+	for (k = 0; k < nrpts; k++) {
+		addlinept(&vline, &nvline, &vlinecap, rpts[k].x, rpts[k].y);
+		addlinept(&hline, &nhline, &hlinecap, rpts[k].y, rpts[k].x);
+	}
 	sortline(vline, &nvline);
 	sortline(hline, &nhline);
 }
