@@ -624,16 +624,6 @@ addlen(struct cutter *ct, size_t len)
 	ct->ll[ct->nll++] = len;
 }
 
-static int
-cmppoint(const void *va, const void *vb)
-{
-	const struct point *a = va, *b = vb;
-
-	if (a->x != b->x)
-		return a->x < b->x ? -1 : 1;
-	return (a->y > b->y) - (a->y < b->y);
-}
-
 /*
  * A loop that passes a point twice (a hole touching the cell's side or
  * its shell from inside) is split there into loops that do not, as
@@ -654,11 +644,11 @@ splitpinches(struct cutter *ct, size_t first)
 	}
 	sorted = xreallocarray(NULL, k, sizeof(*sorted));
 	memcpy(sorted, v, k * sizeof(*v));
-	qsort(sorted, k, sizeof(*sorted), cmppoint);
+	qsort(sorted, k, sizeof(*sorted), point_cmp);
 	dup = sorted;		/* the points given twice, in place */
 	for (i = 1; i < k; i++)
-		if (cmppoint(&sorted[i - 1], &sorted[i]) == 0 &&
-		    (ndup == 0 || cmppoint(&dup[ndup - 1], &sorted[i]) != 0))
+		if (point_cmp(&sorted[i - 1], &sorted[i]) == 0 &&
+		    (ndup == 0 || point_cmp(&dup[ndup - 1], &sorted[i]) != 0))
 			dup[ndup++] = sorted[i];
 	if (ndup == 0) {
 		free(sorted);
@@ -672,7 +662,7 @@ splitpinches(struct cutter *ct, size_t first)
 	/* the loops cut off are written over the front of v as they close */
 	for (i = 0; i < k; i++) {
 		struct point *d = bsearch(&v[i], dup, ndup, sizeof(*dup),
-		    cmppoint);
+		    point_cmp);
 		size_t id = d != NULL ? (size_t)(d - dup) : (size_t)-1;
 
 		if (id != (size_t)-1 && at[id] != (size_t)-1) {
@@ -680,7 +670,7 @@ splitpinches(struct cutter *ct, size_t first)
 
 			for (j = from; j < top; j++) {
 				struct point *e = bsearch(&stack[j], dup,
-				    ndup, sizeof(*dup), cmppoint);
+				    ndup, sizeof(*dup), point_cmp);
 
 				if (j > from && e != NULL)
 					at[e - dup] = (size_t)-1;

@@ -157,3 +157,14 @@ ring_contains(const struct point *v, size_t n, struct point p,
 		inside ^= ray_crosses(v[j], v[i], p, toward);
 	return inside;
 }
+
+/* Points in order by x, then y: for qsort and bsearch. */
+int
+point_cmp(const void *va, const void *vb)
+{
+	const struct point *a = va, *b = vb;
+
+	if (a->x != b->x)
+		return a->x < b->x ? -1 : 1;
+	return (a->y > b->y) - (a->y < b->y);
+}

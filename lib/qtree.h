@@ -55,6 +55,7 @@ struct point {
 };
 int	 orient2d(double, double, double, double, double, double);
 int	 ray_crosses(struct point, struct point, struct point, struct point);
+int	 point_cmp(const void *, const void *);
 int	 ring_contains(const struct point *, size_t, struct point,
 	    struct point);
 

@@ -147,7 +147,7 @@ area2='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	run -2 --separate-stderr qtmesh -b -c F /dev/null
 	[[ "$stderr" == *"not with -c"* ]]
 	run -2 --separate-stderr qtmesh -x
-	[ "${stderr_lines[1]}" = "usage: qtmesh [-bHhrTv] [-c classes] [-f format] [-o basename] [file]" ]
+	[ "${stderr_lines[1]}" = "usage: qtmesh [-bHhrTv] [-c classes] [-f format] [-o basename] [-t fraction] [file]" ]
 	grep -q '^\.Op Fl bHhrTv$' "$TOP/man/qtmesh.1"
 }
 
@@ -307,6 +307,88 @@ bfitcheck() {
 	bfitcheck mesh.qt
 }
 
+# -t, worked by hand.  The trapezoid (0,0) (4,0) (4,1.125) (0,3.125), its
+# top edge on y = 3.125 - x/2, in [0,4]^2 at level 1:
+#
+#   3.125 .                  leaf 3 [2,4]^2 holds the piece (2,2) (2.25,2)
+#         |  ` .             (2,2.125), area 1/64, 1/256 of its cell.
+#   2.125 +------.           Without -t: 9 vertices; the triangle (0,2)
+#       2 +------+.-.        (2,2) (2,2.125) has an angle of atan(1/16) =
+#         |  F   |  ` .      3.576 degrees at (0,2).  With -t 0.01 the
+#         |      |    | 1.125 corner (2,2) moves onto (2,2.125), the
+#       0 +------+----+      nearer boundary vertex, and (2.25,2), where
+#         0      2    4      the edge crosses y = 2, follows it:
+# 7 vertices, the quad (0,0) (2,0) (2,2.125) (0,2), the triangles (2,0)
+# (4,0) (2,2.125), (4,0) (4,1.125) (2,2.125) and (0,2) (2,2.125)
+# (0,3.125); the smallest angle atan(2.125/2) - atan(1/2) = 20.171
+# degrees, at (2,2.125); leaf 3 keeps no element, its number 5.
+trapezoid() {
+	printf '0 0\n4 0\n4 1.125\n0 3.125\n' | polyread -u 0,0,4 | qtsplit -l 1
+}
+
+@test "-t: a corner piece joins its neighbours (worked by hand)" {
+	trapezoid | qtmesh -b > plain.qt
+	trapezoid | qtmesh -b -t 0.01 > joined.qt
+	run -0 awk '$1 == "vertex" { n++ } $1 == "elem" { e++ } END { print n, e }' plain.qt
+	[ "$output" = "9 7" ]
+	run -0 bash -c "grep -E '^(vertex|elem)' joined.qt | awk '
+	    \$1 == \"vertex\" { p[\$2] = \"(\" \$3 \",\" \$4 \")\"; next }
+	    { s = \$3; for (k = 4; k <= NF; k++) s = s \" \" p[\$k]; print s }' | sort"
+	[ "$output" = "$(printf '%s\n' 'quad (0,0) (2,0) (2,2.125) (0,2)' \
+	    'tri (0,2) (2,2.125) (0,3.125)' 'tri (2,0) (4,0) (2,2.125)' \
+	    'tri (4,0) (4,1.125) (2,2.125)' | sort)" ]
+	run -0 awk '$1 == "leaf" { print $2, $10 }' joined.qt
+	[ "$output" = "$(printf '0 1\n1 2\n2 4\n3 5')" ]
+	run -0 awk "$area2" joined.qt
+	[ "$output" = 17 ]
+	run -0 awk "$sides" joined.qt
+	awk -v got="${output#* }" 'BEGIN { d = got - (8.25 + sqrt(20))
+	    exit d > 1e-12 || d < -1e-12 }'
+	# the smallest angles, from qtstats, against the hand's
+	for f in plain:3.576334375 joined:20.17065341; do
+		run -0 bash -c "qtstats ${f%%:*}.qt | awk '\$1 == \"smallest_angle\" { print \$2 }'"
+		awk -v got="$output" -v want="${f#*:}" 'BEGIN { d = got - want
+		    exit d > 1e-8 || d < -1e-8 }'
+	done
+	awk 'BEGIN { printf "%.8f %.8f\n", atan2(1, 16) * 45 / atan2(1, 1),
+	    (atan2(2.125, 2) - atan2(1, 2)) * 45 / atan2(1, 1) }' |
+	    grep -qx '3.57633437 20.17065341'
+	bfitcheck joined.qt
+}
+
+@test "-t: meshes stay exact and their smallest angle never shrinks (amoeba, star)" {
+	awk -v shape=star -v n=1000 -f "$TOP/tools/genpoly.awk" > star.xy
+	for c in "samples/amoeba.brep 5" "samples/amoeba.brep 7" "star.xy 8"; do
+		set -- $c
+		f=$1
+		[ -f "$f" ] || f=$TOP/$1
+		polyread "$f" | qtsplit -l $2 | qtbalance > tree.qt
+		qtmesh -b tree.qt > plain.qt
+		qtmesh -b -t 0.2 tree.qt > joined.qt
+		bfitcheck joined.qt > check || { echo "$c:"; cat check; return 1; }
+		a=$(qtstats plain.qt | awk '$1 == "smallest_angle" { print $2 }')
+		b=$(qtstats joined.qt | awk '$1 == "smallest_angle" { print $2 }')
+		p=$(grep -c '^elem' plain.qt)
+		j=$(grep -c '^elem' joined.qt)
+		echo "$c: $p -> $j elements, smallest angle $a -> $b"
+		awk -v a="$a" -v b="$b" 'BEGIN { exit !(b >= a) }'
+		[ "$j" -lt "$p" ]
+	done
+}
+
+@test "-t 0 joins nothing; -t needs -b and a fraction from 0 to 1" {
+	trapezoid > tree.qt
+	qtmesh -b tree.qt > plain.qt
+	qtmesh -b -t 0 tree.qt > zero.qt
+	cmp plain.qt zero.qt
+	run -2 qtmesh -t 0.1 tree.qt
+	[[ "$output" == *"-t joins the cut pieces of -b"* ]]
+	for t in 2 -0.5 x 0.1x ''; do
+		run -2 qtmesh -b -t "$t" tree.qt
+		[[ "$output" == *"-t: not a fraction from 0 to 1"* ]]
+	done
+}
+
 @test "real polygons from ../shared/data mesh exactly at levels 4 and 6" {
 	need_shared
 	n=0
@@ -366,6 +448,14 @@ ringlengths() {
 
 @test "msh: the -b mesh with its boundary as lines tagged by ring, each ring's lines as long as the ring" {
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 5 | qtbalance > tree.qt
+	# -t joins change the lines; they must still add up to each ring
+	qtmesh -b -t 0.2 -f msh tree.qt > m.msh
+	run -0 python3 "$TOP/tests/bfitcheck.py" m.msh tree.qt
+	qtmesh -b -t 0.2 tree.qt | python3 "$TOP/tests/bfitcheck.py" /dev/stdin > want
+	[ "$output" = "$(cat want)" ]
+	run -0 ringlengths m.msh tree.qt
+	[[ "${lines[0]}" == "ring 1 "*" ok" ]]
+	[[ "${lines[1]}" == "ring 2 "*" ok" ]]
 	qtmesh -b -f msh tree.qt > m.msh
 	# the same mesh as -f qtree, checked the same way
 	run -0 python3 "$TOP/tests/bfitcheck.py" m.msh tree.qt

@@ -17,6 +17,7 @@
  * leaves: their midpoint hangs, or the tree is not balanced), or absent
  * (a larger leaf, or nothing: the boundary).
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -134,7 +135,7 @@ static void
 usage(int help)
 {
 	usageexit(help, "usage: qtmesh [-bHhrTv] [-c classes] [-f format] "
-	    "[-o basename] [file]\n");
+	    "[-o basename] [-t fraction] [file]\n");
 }
 
 static void *
@@ -845,22 +846,26 @@ takein(const struct linept *a, size_t n, int vertical, double line,
 	}
 }
 
-/* Element of vertices v[0..n), started from its lowest, then leftmost. */
+/* Element e is v[0..n), started from its lowest, then leftmost vertex. */
 static void
-addbelem(const uint32_t *v, int n)
+setelem(struct elem *e, const uint32_t *v, int n)
 {
-	struct elem *e;
 	int k, lo = 0;
 
 	for (k = 1; k < n; k++)
 		if (bv[v[k] - 1].y < bv[v[lo] - 1].y || (bv[v[k] - 1].y ==
 		    bv[v[lo] - 1].y && bv[v[k] - 1].x < bv[v[lo] - 1].x))
 			lo = k;
-	elems = grow(elems, &elemcap, nelems, sizeof(*elems));
-	e = &elems[nelems++];
 	e->v[3] = 0;
 	for (k = 0; k < n; k++)
 		e->v[k] = v[(lo + k) % n];
+}
+
+static void
+addbelem(const uint32_t *v, int n)
+{
+	elems = grow(elems, &elemcap, nelems, sizeof(*elems));
+	setelem(&elems[nelems++], v, n);
 }
 
 /*
@@ -1074,6 +1079,439 @@ meshbfit(size_t i)
 			}
 }
 
+/*
+ * -t: a small cut piece joins its neighbours.  A piece of a partial leaf
+ * smaller than tfrac of its cell that holds a corner of the cell lies
+ * between that corner and the boundary passing near it, and the elements
+ * round the corner are slivers.  The corner, a vertex inside the region,
+ * collapses onto the nearest boundary vertex next to it: the elements that
+ * hold both vanish, the others take the boundary vertex in the corner's
+ * place.  The elements round a vertex tile a polygon, and the new ones
+ * tile the same polygon when each is strictly counter-clockwise (and
+ * convex, a quad): that is checked exactly first, and a collapse that
+ * fails it is not made.  The region and the boundary do not move.
+ */
+static double tfrac = -1;	/* -t, or -1 */
+static uint32_t *vfirst, *vinc;	/* vertex v's elements: vinc[vfirst[v - 1]..] */
+static unsigned char *edead, *vbnd;
+
+/* The vertices that the side count finds on the region's boundary. */
+static void
+markboundary(void)
+{
+	struct sidemap m = { NULL, 0, 0 };
+	size_t i;
+	int k, n;
+
+	vbnd = xcalloc(nbv + 1, 1);
+	for (i = 0; i < nelems; i++)
+		for (n = nverts(&elems[i]), k = 0; k < n; k++)
+			sideput(&m, elems[i].v[k], elems[i].v[(k + 1) % n], 1);
+	for (i = 0; i < nelems; i++)
+		for (n = nverts(&elems[i]), k = 0; k < n; k++)
+			if (sideget(&m, elems[i].v[(k + 1) % n],
+			    elems[i].v[k]) == 0)
+				vbnd[elems[i].v[k]] = 1;
+	free(m.slot);
+}
+
+/* Each vertex's elements, once, as they are before any collapse. */
+static void
+incidence(void)
+{
+	size_t i, v, total;
+	int k;
+
+	vfirst = xcalloc(nbv + 1, sizeof(*vfirst));
+	for (i = 0; i < nelems; i++)
+		for (k = 0; k < nverts(&elems[i]); k++)
+			vfirst[elems[i].v[k]]++;
+	for (v = 1; v <= nbv; v++)
+		vfirst[v] += vfirst[v - 1];
+	total = vfirst[nbv];
+	vinc = xreallocarray(NULL, total + 1, sizeof(*vinc));
+	for (i = nelems; i-- > 0;)
+		for (k = 0; k < nverts(&elems[i]); k++)
+			vinc[--vfirst[elems[i].v[k]]] = i;
+	/* vfirst[v] is where vertex v's start: shifted, where they end */
+	memmove(vfirst, vfirst + 1, nbv * sizeof(*vfirst));
+	vfirst[nbv] = total;
+}
+
+static int
+posof(const struct elem *e, uint32_t v)
+{
+	int k;
+
+	for (k = 0; k < nverts(e); k++)
+		if (e->v[k] == v)
+			return k;
+	return -1;
+}
+
+/*
+ * Element e with c taken for x: the vertices it keeps in *w, their count,
+ * 0 when it holds both, c and x at opposite corners or in a triangle, and
+ * so vanishes (its area is 0 once c is at x).
+ */
+static int
+moved(const struct elem *e, uint32_t c, uint32_t x, uint32_t w[4])
+{
+	int n = nverts(e), kc = posof(e, c), kx = posof(e, x), m = 0, k;
+
+	if (kx >= 0 && (n == 3 || (kx - kc + 4) % 4 == 2))
+		return 0;
+	for (k = 0; k < n; k++)
+		if (k != kc)
+			w[m++] = e->v[k];
+		else if (kx < 0)
+			w[m++] = x;
+	return m;
+}
+
+/* Are the vertices w[0..n) strictly counter-clockwise and convex? */
+static int
+convex(const uint32_t *w, int n)
+{
+	int k;
+
+	for (k = 0; k < n; k++) {
+		const struct point *a = &bv[w[k] - 1], *b = &bv[w[(k + 1) % n] -
+		    1], *d = &bv[w[(k + 2) % n] - 1];
+
+		if (orient2d(a->x, a->y, b->x, b->y, d->x, d->y) <= 0)
+			return 0;
+	}
+	return 1;
+}
+
+/* The smallest angle of the polygon w[0..n), in radians. */
+static double
+smallestangle(const uint32_t *w, int n)
+{
+	double least = 4, ux, uy, vx, vy;	/* more than pi */
+	int k;
+
+	for (k = 0; k < n; k++) {
+		const struct point *a = &bv[w[(k + n - 1) % n] - 1],
+		    *b = &bv[w[k] - 1], *d = &bv[w[(k + 1) % n] - 1];
+
+		ux = a->x - b->x;
+		uy = a->y - b->y;
+		vx = d->x - b->x;
+		vy = d->y - b->y;
+		least = fmin(least, atan2(fabs(ux * vy - uy * vx),
+		    ux * vx + uy * vy));
+	}
+	return least;
+}
+
+/*
+ * The elements that a join changes, as they were, so that a join that
+ * makes the smallest angle among them smaller can be undone.
+ */
+static struct undo {
+	size_t		i;
+	struct elem	e;
+	unsigned char	dead;
+} *undo;
+static size_t nundo, undocap;
+static uint32_t *etxn, txn;	/* etxn[i] == txn: element i is in undo */
+
+static void
+remember(size_t i)
+{
+	undo = grow(undo, &undocap, nundo, sizeof(*undo));
+	undo[nundo].i = i;
+	undo[nundo].e = elems[i];
+	undo[nundo++].dead = edead[i];
+}
+
+/*
+ * Moves vertex c onto vertex x in every element, when each keeps fine;
+ * 0 when one would not, and nothing is moved.
+ */
+static int
+movevertex(uint32_t c, uint32_t x)
+{
+	uint32_t w[4];
+	size_t j;
+	int k;
+
+	/* c's elements as they were: those it has left since are skipped */
+	for (j = vfirst[c - 1]; j < vfirst[c]; j++)
+		if (!edead[vinc[j]] && posof(&elems[vinc[j]], c) >= 0 &&
+		    (k = moved(&elems[vinc[j]], c, x, w)) > 0 && !convex(w, k))
+			return 0;
+	for (j = vfirst[c - 1]; j < vfirst[c]; j++) {
+		if (edead[vinc[j]] || posof(&elems[vinc[j]], c) < 0)
+			continue;
+		remember(vinc[j]);
+		if ((k = moved(&elems[vinc[j]], c, x, w)) == 0)
+			edead[vinc[j]] = 1;
+		else
+			setelem(&elems[vinc[j]], w, k);
+	}
+	return 1;
+}
+
+/*
+ * Keeps the join just made when the smallest angle among the elements it
+ * changed has not shrunk; undoes it otherwise.  1 when kept.
+ */
+static int
+keepjoin(void)
+{
+	double before = 4, after = 4;	/* more than pi */
+	size_t j;
+
+	txn++;
+	for (j = 0; j < nundo; j++) {
+		size_t i = undo[j].i;
+
+		if (etxn[i] == txn)
+			continue;	/* its first state counts */
+		etxn[i] = txn;
+		before = fmin(before, smallestangle(undo[j].e.v,
+		    nverts(&undo[j].e)));
+		if (!edead[i])
+			after = fmin(after, smallestangle(elems[i].v,
+			    nverts(&elems[i])));
+	}
+	if (after >= before)
+		return 1;
+	for (j = nundo; j-- > 0;) {
+		elems[undo[j].i] = undo[j].e;
+		edead[undo[j].i] = undo[j].dead;
+	}
+	return 0;
+}
+
+/*
+ * The boundary vertices next to vertex c, inside the region, nearest
+ * first: their count, 0 when c is on the boundary.
+ */
+static int
+candidates(uint32_t c, uint32_t cand[64])
+{
+	double d[64], dx, dy, t;
+	uint32_t x;
+	size_t j;
+	int n = 0, k, m;
+
+	if (vbnd[c])
+		return 0;
+	for (j = vfirst[c - 1]; j < vfirst[c]; j++) {
+		const struct elem *e = &elems[vinc[j]];
+
+		if (edead[vinc[j]] || posof(e, c) < 0)
+			continue;
+		x = e->v[(posof(e, c) + 1) % nverts(e)];
+		for (m = 0; m < n && cand[m] != x; m++)
+			;
+		if (!vbnd[x] || m < n || n == 64)
+			continue;
+		dx = bv[x - 1].x - bv[c - 1].x;
+		dy = bv[x - 1].y - bv[c - 1].y;
+		/* in order by distance, by insertion */
+		for (k = n++, t = dx * dx + dy * dy; k > 0 && d[k - 1] > t; k--) {
+			d[k] = d[k - 1];
+			cand[k] = cand[k - 1];
+		}
+		d[k] = t;
+		cand[k] = x;
+	}
+	return n;
+}
+
+static struct point *rvsorted;	/* the ring vertices, for bsearch */
+
+static double
+dist2(uint32_t p, uint32_t q)
+{
+	double dx = bv[p - 1].x - bv[q - 1].x, dy = bv[p - 1].y - bv[q - 1].y;
+
+	return dx * dx + dy * dy;
+}
+
+/*
+ * Joins boundary vertex p to its boundary neighbour y (0: the nearer)
+ * when p is no ring vertex but where a ring edge crosses a grid line, the
+ * boundary runs straight through it, and every element keeps fine: the
+ * boundary and the region stay as they are.  1 when joined.
+ */
+static int
+straighten(uint32_t p, uint32_t y)
+{
+	uint32_t a = 0, b = 0, s, t;
+	size_t j, i;
+	int n;
+
+	if (!vbnd[p] || bsearch(&bv[p - 1], rvsorted, nrpts,
+	    sizeof(*rvsorted), point_cmp) != NULL)
+		return 0;
+	/* a: after p on the boundary (p -> a, no a -> p); b: before it */
+	for (j = vfirst[p - 1]; j < vfirst[p]; j++) {
+		const struct elem *e = &elems[vinc[j]];
+		int found = 0;
+
+		if (edead[vinc[j]] || posof(e, p) < 0)
+			continue;
+		n = nverts(e);
+		s = e->v[(posof(e, p) + 1) % n];
+		t = e->v[(posof(e, p) + n - 1) % n];
+		for (i = vfirst[p - 1]; i < vfirst[p]; i++) {
+			const struct elem *f = &elems[vinc[i]];
+			int m = nverts(f);
+
+			if (edead[vinc[i]] || posof(f, p) < 0)
+				continue;
+			if (f->v[(posof(f, p) + m - 1) % m] == s)
+				found |= 1;
+			if (f->v[(posof(f, p) + 1) % m] == t)
+				found |= 2;
+		}
+		if (!(found & 1))
+			a = s;
+		if (!(found & 2))
+			b = t;
+	}
+	if (a == 0 || b == 0 || (y != 0 && y != a && y != b) ||
+	    orient2d(bv[b - 1].x, bv[b - 1].y, bv[p - 1].x, bv[p - 1].y,
+	    bv[a - 1].x, bv[a - 1].y) != 0)
+		return 0;
+	if (y == 0)
+		y = dist2(p, a) < dist2(p, b) ? a : b;
+	if (!movevertex(p, y))
+		return 0;
+	/* the side b -> a that it leaves runs along the same ring */
+	sideput(&ringsides, b, a, sideget(&ringsides, b, p));
+	return 1;
+}
+
+/* The number of the vertex at (x, y), 0 when there is none. */
+static uint32_t
+bvfind(double x, double y)
+{
+	return btabcap == 0 ? 0 : btab[bslot(btab, btabcap, x + 0.0,
+	    y + 0.0)].id;
+}
+
+/*
+ * Drops the elements that vanished and the vertices that no element uses
+ * any more, the rest numbered again by first use, as before.
+ */
+static void
+compact(void)
+{
+	uint32_t *to = xcalloc(nbv + 1, sizeof(*to)), nv = 0;
+	struct point *nbvs = xreallocarray(NULL, nbv + 1, sizeof(*nbvs));
+	struct sidemap old = ringsides;
+	size_t i, j, w, leaf;
+	int k;
+
+	for (leaf = 0, w = i = 0; i < nelems; i++) {
+		while (leaf < nleaves && elstart[leaf] == i)
+			elstart[leaf++] = w;
+		if (!edead[i])
+			elems[w++] = elems[i];
+	}
+	while (leaf <= nleaves)
+		elstart[leaf++] = w;
+	nelems = w;
+	for (i = 0; i < nelems; i++)
+		for (k = 0; k < nverts(&elems[i]); k++) {
+			if (to[elems[i].v[k]] == 0) {
+				to[elems[i].v[k]] = ++nv;
+				nbvs[nv - 1] = bv[elems[i].v[k] - 1];
+			}
+			elems[i].v[k] = to[elems[i].v[k]];
+		}
+	free(bv);
+	bv = nbvs;
+	bvcap = nbv + 1;
+	nbv = nv;
+	memset(&ringsides, 0, sizeof(ringsides));
+	for (j = 0; j < old.cap; j++)
+		if (old.slot[j].key != 0)
+			sideput(&ringsides, to[old.slot[j].key >> 32],
+			    to[old.slot[j].key & 0xffffffff], old.slot[j].val);
+	free(old.slot);
+	free(to);
+}
+
+/* -t: the small pieces of partial leaves that hold a cell corner join. */
+static void
+jointiny(void)
+{
+	double x[2], y[2], a, area;
+	size_t i, j, k, q, at, n;
+	uint32_t c, v, cand[64];
+	int joined = 0, m, ncand;
+
+	rvsorted = xreallocarray(NULL, nrpts + 1, sizeof(*rvsorted));
+	memcpy(rvsorted, rpts, nrpts * sizeof(*rvsorted));
+	qsort(rvsorted, nrpts, sizeof(*rvsorted), point_cmp);
+	markboundary();
+	incidence();
+	edead = xcalloc(nelems + 1, 1);
+	etxn = xcalloc(nelems + 1, sizeof(*etxn));
+	for (i = 0; i < nleaves; i++) {
+		if (leaves[i].class != 'P')
+			continue;
+		leafbox(&leaves[i], x, y);
+		area = (x[1] - x[0]) * (y[1] - y[0]);
+		at = leafpts[i];
+		for (j = leafloops[i]; j < leafloops[i + 1]; at += llen[j++]) {
+			const struct point *p = &lpts[at];
+
+			n = llen[j];
+			for (a = 0, k = 0; k < n; k++)
+				a += p[k].x * p[(k + 1) % n].y -
+				    p[(k + 1) % n].x * p[k].y;
+			if (a <= 0 || a / 2 >= tfrac * area)
+				continue;
+			for (k = 0; k < n; k++) {
+				if ((p[k].x != x[0] && p[k].x != x[1]) ||
+				    (p[k].y != y[0] && p[k].y != y[1]) ||
+				    (c = bvfind(p[k].x, p[k].y)) == 0)
+					continue;
+				ncand = candidates(c, cand);
+				for (m = 0; m < ncand; m++) {
+					nundo = 0;
+					if (!movevertex(c, cand[m]))
+						continue;
+					/* the piece's crossings, where c went */
+					for (q = 0; q < n; q++)
+						if ((v = bvfind(p[q].x, p[q].y)) !=
+						    0 && v != cand[m])
+							straighten(v, cand[m]);
+					if (keepjoin()) {
+						joined = 1;
+						break;
+					}
+				}
+			}
+			/* crossings that remain, to a neighbour along the ring */
+			for (k = 0; k < n; k++) {
+				nundo = 0;
+				if ((c = bvfind(p[k].x, p[k].y)) != 0 &&
+				    straighten(c, 0) && keepjoin())
+					joined = 1;
+			}
+		}
+	}
+	if (joined)
+		compact();
+	free(vfirst);
+	free(vinc);
+	free(edead);
+	free(etxn);
+	free(undo);
+	free(vbnd);
+	free(rvsorted);
+}
+
 static void
 bfitmesh(void)
 {
@@ -1087,6 +1525,8 @@ bfitmesh(void)
 		meshbfit(i);
 	}
 	elstart[nleaves] = nelems;
+	if (tfrac > 0)
+		jointiny();
 	ear_free(ear);
 	cut_free(cutter);
 	if (format != QTREE)
@@ -1619,10 +2059,11 @@ main(int argc, char *argv[])
 	enum qtkind kind;
 	uint32_t *inv, bw0 = 0;
 	size_t i, nv;
+	const char *end;
 	int ch, head, cflag = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "HTbc:f:o:rvh")) != -1)
+	while ((ch = getopt(argc, argv, "HTbc:f:o:rt:vh")) != -1)
 		switch (ch) {
 		case 'b':
 			bfit = 1;
@@ -1646,6 +2087,11 @@ main(int argc, char *argv[])
 		case 'r':
 			renumber = 1;
 			break;
+		case 't':
+			if (parsereal(optarg, &end, &tfrac) < 0 || *end != '\0' ||
+			    !(tfrac >= 0 && tfrac <= 1))
+				die(2, "-t: not a fraction from 0 to 1: %s", optarg);
+			break;
 		case 'v':
 			verbose = 1;
 			break;
@@ -1659,6 +2105,8 @@ main(int argc, char *argv[])
 	if ((format == TRIANGLE) != (outbase != NULL))
 		die(2, format == TRIANGLE ? "-f triangle needs -o basename" :
 		    "-o is for -f triangle only");
+	if (tfrac >= 0 && !bfit)
+		die(2, "-t joins the cut pieces of -b: not without it");
 	if (bfit && (!conform || cflag))
 		die(2, "-b meshes the region, from the F and P leaves: not "
 		    "with %s", cflag ? "-c" : "-H");
