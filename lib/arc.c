@@ -402,6 +402,21 @@ powerat(const struct arc *a, double x, double y)
 	return s;
 }
 
+/*
+ * The sign of f at a point whose squared distance from (cx, cy) rounds to
+ * g, when the filter can tell it, else 0.  (cx, cy) is within ec sqrt(2)
+ * of C; tin and tout allow for it.
+ */
+static inline int
+powerfilter(const struct arc *a, double g)
+{
+	if (g * (1 - 0x1p-40) > a->tout + 0x1p-1000)
+		return 1;
+	if (g * (1 + 0x1p-40) + 0x1p-1000 < a->tin)
+		return -1;
+	return 0;
+}
+
 /* The sign of f at (x, y): -1 inside the circle, 0 on it, 1 outside. */
 int
 arc_power(const struct arc *a, double x, double y)
@@ -409,14 +424,11 @@ arc_power(const struct arc *a, double x, double y)
 	struct interval px, py, v;
 	struct bigarc z;
 	struct big bx, by, t, u;
-	double dx = x - a->cx, dy = y - a->cy, g = dx * dx + dy * dy;
+	double dx = x - a->cx, dy = y - a->cy;
 	int s;
 
-	/* (cx, cy) is within ec * sqrt(2) of C; tin and tout allow for it */
-	if (g * (1 - 0x1p-40) > a->tout + 0x1p-1000)
-		return 1;
-	if (g * (1 + 0x1p-40) + 0x1p-1000 < a->tin)
-		return -1;
+	if ((s = powerfilter(a, dx * dx + dy * dy)) != 0)
+		return s;
 	px = iv_diff(x, a->a.x), py = iv_diff(y, a->a.y);
 	v = iv_sub(iv_mul(a->id, iv_add(iv_mul(px, px), iv_mul(py, py))),
 	    iv_add(iv_mul(px, a->iux), iv_mul(py, a->iuy)));
@@ -436,6 +448,31 @@ arc_power(const struct arc *a, double x, double y)
 	big_mul(&u, &by, &z.uy);
 	big_addsub(&t, &t, &u, -1);
 	return big_sign(&t) * a->sd;
+}
+
+/*
+ * arc_power at the grid points (gx[i], gy[j]), into f[3 j + i]: the
+ * squares of the distances along each axis once, for the nine.
+ */
+void
+arc_powergrid(const struct arc *a, const double gx[3], const double gy[3],
+    signed char f[9])
+{
+	double dx2[3], dy2[3];
+	int i, j;
+
+	for (i = 0; i < 3; i++) {
+		double dx = gx[i] - a->cx, dy = gy[i] - a->cy;
+
+		dx2[i] = dx * dx;
+		dy2[i] = dy * dy;
+	}
+	for (j = 0; j < 3; j++)
+		for (i = 0; i < 3; i++) {
+			int s = powerfilter(a, dx2[i] + dy2[j]);
+
+			f[3 * j + i] = s != 0 ? s : arc_power(a, gx[i], gy[j]);
+		}
 }
 
 /*
@@ -617,8 +654,7 @@ int
 arc_meets(const struct arc *a, double x0, double y0, double x1, double y1,
     const signed char o[4], const signed char f[4])
 {
-	int c, pos = 0, neg = 0, out = 0, in = 0, cx, cy, fz, oz;
-	double zx = 0, zy = 0;
+	int c, pos = 0, neg = 0, out = 0, in = 0, oz = 0;
 
 #define INBOX(p)	((p).x > x0 && (p).x < x1 && (p).y > y0 && (p).y < y1)
 	if (INBOX(a->a) || INBOX(a->b) || INBOX(a->m))
@@ -646,13 +682,33 @@ arc_meets(const struct arc *a, double x0, double y0, double x1, double y1,
 		return 0;
 	if (in)
 		return 1;
+	if (arc_nearpower(a, x0, y0, x1, y1, o, f, &oz) >= 0)
+		return 0;
+	if (oz == 0)
+		oz = pos ? 1 : -1;	/* K on one side of the line */
+	return oz == a->sd;
+}
+
+/*
+ * The sign of f at z, the point of the closed box [x0, x1] x [y0, y1]
+ * nearest the centre, given the powers f[] at its corners (in arc_meets'
+ * order); when it is negative and o is not NULL, *oz gets orient2d(A, B,
+ * z), from the corners' o[] when z is one.
+ */
+int
+arc_nearpower(const struct arc *a, double x0, double y0, double x1,
+    double y1, const signed char o[4], const signed char f[4], int *oz)
+{
+	int c, cx, cy, fz;
+	double zx = 0, zy = 0;
+
 	{	/* the disc surely misses K: the filter of arc_power */
 		double dx = fmax(fmax(x0 - a->cx, a->cx - x1), 0);
 		double dy = fmax(fmax(y0 - a->cy, a->cy - y1), 0);
 
 		dx = fmax(dx - a->ec, 0), dy = fmax(dy - a->ec, 0);
 		if ((dx * dx + dy * dy) * (1 - 0x1p-40) > a->tout + 0x1p-1000)
-			return 0;
+			return 1;
 	}
 	/* z: the centre clamped to K, by coordinates */
 	cx = arc_cmpcentre(a, 0, x0) >= 0 ? -1 : arc_cmpcentre(a, 0, x1) <= 0 ?
@@ -665,23 +721,20 @@ arc_meets(const struct arc *a, double x0, double y0, double x1, double y1,
 		zy = cy < 0 ? y0 : y1;
 	if (cx != 0 && cy != 0) {
 		c = (cx > 0) + 2 * (cy > 0);
-		fz = f[c];
-		oz = o[c];
-	} else if (cx != 0) {
-		fz = arc_powerline(a, 0, zx);
-		oz = arc_orientline(a, 0, zx);
-	} else if (cy != 0) {
-		fz = arc_powerline(a, 1, zy);
-		oz = arc_orientline(a, 1, zy);
-	} else {
-		fz = -1;
-		oz = a->oc;
+		if (f[c] < 0 && o != NULL)
+			*oz = o[c];
+		return f[c];
 	}
-	if (fz >= 0)
-		return 0;
-	if (oz == 0)
-		oz = pos ? 1 : -1;	/* K on one side of the line */
-	return oz == a->sd;
+	if (cx != 0)
+		fz = arc_powerline(a, 0, zx);
+	else if (cy != 0)
+		fz = arc_powerline(a, 1, zy);
+	else
+		fz = -1;
+	if (fz < 0 && o != NULL)
+		*oz = cx != 0 ? arc_orientline(a, 0, zx) : cy != 0 ?
+		    arc_orientline(a, 1, zy) : a->oc;
+	return fz;
 }
 
 /*

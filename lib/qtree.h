@@ -74,6 +74,10 @@ int	 ring_contains(const struct point *, size_t, struct point,
  * whether (x, y) + (d, d^2), d > 0 infinitesimal, lies in the segment.
  * arc_boxoff says, from the filter alone, that a closed box lies surely
  * outside the circle or surely inside it, so that the arc misses it.
+ * arc_powergrid gives arc_power at the nine points of a 3 x 3 grid, f[3 j
+ * + i] at (gx[i], gy[j]); arc_nearpower the power at the point of a closed
+ * box nearest the centre, from its corners' powers, and that point's
+ * orientation against a->b when o is not NULL and the power is negative.
  * The box is conservative: the arc lies strictly inside it.
  */
 struct interval {
@@ -100,6 +104,10 @@ int	 arc_insegment(const struct arc *, double, double, int, int);
 int	 arc_meets(const struct arc *, double, double, double, double,
 	    const signed char[4], const signed char[4]);
 int	 arc_boxoff(const struct arc *, double, double, double, double);
+void	 arc_powergrid(const struct arc *, const double[3], const double[3],
+	    signed char[9]);
+int	 arc_nearpower(const struct arc *, double, double, double, double,
+	    const signed char[4], const signed char[4], int *);
 
 /*
  * For polyread's checks: arc_defect says why three points make no arc, or

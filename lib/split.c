@@ -247,6 +247,18 @@ split_root(struct splitter *sp, int *inside)
 }
 
 /*
+ * The parities' changes along the paths (bottom, left, middle) from
+ * whether their ends, grid points 0, 1, 3, 4, lie in an arc's segment.
+ */
+static void
+segflips(const int seg[4], int par[3])
+{
+	par[0] ^= seg[0] ^ seg[1];
+	par[1] ^= seg[0] ^ seg[2];
+	par[2] ^= seg[1] ^ seg[3];
+}
+
+/*
  * An arc of the cell whose children's corners are the grid gx x gy: the
  * children whose open interiors it meets, as a mask, and its part of the
  * parities' changes along the paths (par: bottom, left, middle).  s holds
@@ -295,9 +307,64 @@ arcchildren(const struct splitter *sp, const struct edge *e,
 			f[g] = arc_power(a, x, y);
 		seg[c] = arc_insegment(a, x, y, s[g], f[g]);
 	}
-	par[0] ^= seg[0] ^ seg[1];
-	par[1] ^= seg[0] ^ seg[2];
-	par[2] ^= seg[1] ^ seg[3];
+	segflips(seg, par);
+	return m;
+}
+
+/*
+ * Whether the closed box [x0, x1] x [y0, y1] lies strictly on the arc's
+ * side of its chord line: orient2d is affine in the point, so its least
+ * value times sd over the box is at one corner, which the signs of the
+ * chord's differences pick.
+ */
+static int
+onarcside(const struct edge *e, int sd, double x0, double y0, double x1,
+    double y1)
+{
+	double x = (e->by > e->ay) == (sd > 0) ? x1 : x0;
+	double y = (e->bx > e->ax) == (sd > 0) ? y0 : y1;
+
+	return orient(e, x, y) == sd;
+}
+
+/*
+ * arcchildren for a cell that lies strictly on the arc's side of its chord
+ * line, where the arc is its circle: the chord crosses none of the
+ * parities' paths, every grid point lies on the arc's side, and an open
+ * child meets the circle exactly when a corner lies outside it and the
+ * child's point nearest the centre inside (the power is convex).
+ */
+static int
+circlechildren(const struct arc *a, const double gx[3], const double gy[3],
+    const int inx[2], const int iny[2], int par[3])
+{
+	static const int pt[4] = { 0, 1, 3, 4 };	/* the paths' ends */
+	signed char f[9], cf[4];
+	int q, c, m = 0, seg[4];
+
+	arc_powergrid(a, gx, gy, f);
+	for (q = 0; q < 4; q++) {
+		int i = q & 1, j = q >> 1, g = 3 * j + i, out = 0, in = 0;
+
+		if (!inx[i] || !iny[j])
+			continue;
+		cf[0] = f[g], cf[1] = f[g + 1], cf[2] = f[g + 3];
+		cf[3] = f[g + 4];
+		for (c = 0; c < 4; c++) {
+			out |= cf[c] > 0;
+			in |= cf[c] < 0;
+		}
+		if (out && (in || arc_nearpower(a, gx[i], gy[j], gx[i + 1],
+		    gy[j + 1], NULL, cf, NULL) < 0))
+			m |= 1 << q;
+	}
+	for (c = 0; c < 4; c++) {
+		int g = pt[c];
+
+		seg[c] = f[g] < 0 || (f[g] == 0 && arc_insegment(a, gx[g % 3],
+		    gy[g / 3], a->sd, 0));
+	}
+	segflips(seg, par);
 	return m;
 }
 
@@ -344,6 +411,12 @@ split_children(struct splitter *sp, int level, uint64_t ix, uint64_t iy,
 				mask[k] = 1 << (2 * j + i);
 				continue;
 			}
+		}
+		if (e->arc >= 0 && onarcside(e, sp->arcs[e->arc].sd, gx[0],
+		    gy[0], gx[2], gy[2])) {
+			mask[k] = circlechildren(&sp->arcs[e->arc], gx, gy,
+			    inx, iny, par);
+			continue;
 		}
 		if (e->arc >= 0)
 			m = arcchildren(sp, e, gx, gy, inx, iny, s, par);

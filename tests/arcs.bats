@@ -129,6 +129,60 @@ leaves() {
 	done
 }
 
+@test "circles through grid corners, tangent to cells' sides or bulging into them: qtsplit agrees with arcclass.py at levels 3 to 6" {
+	# where a cell lies strictly on an arc's side of its chord, qtsplit
+	# takes the arc as its circle, filtering the powers at the corners in
+	# floating point; these circles put corners exactly on them, where
+	# the filter cannot decide.  The circle of radius 5/2 around (4,
+	# 17/4), as two arcs on a slanted chord, holds the grid points (4 +-
+	# 3/2, 17/4 +- 2) and (4 +- 2, 17/4 +- 3/2) (3, 4, 5) and touches x =
+	# 13/2 and x = 3/2 at y = 17/4, the middle of cells' sides at level
+	# 4.  The major arc from (1, 1/2) through (2, 7/2) to (3, 1/2) has its
+	# centre at (2, 11/6), on no double, so the exact integers decide at
+	# its top (2, 7/2), where y = 7/2 touches it.  The circle of radius
+	# 5/8 around (7/2, 9/2) bulges into the cell [4, 5]^2 of level 3
+	# through its left side, reaching x = 33/8, with no corner of it
+	# inside (their distance^2 1/2 > 25/64): partial all the same
+	cat > c.qt <<-'EOF'
+	qtree 1
+	universe 0 0 8
+	ring 1 outer 4
+	v 5.5 6.25
+	a 2 5.75
+	v 2.5 2.25
+	a 6 2.75
+	end 6
+	EOF
+	cat > m.qt <<-'EOF'
+	qtree 1
+	universe 0 0 4
+	ring 1 outer 3
+	v 1 0.5
+	a 2 3.5
+	v 3 0.5
+	end 5
+	EOF
+	cat > b.qt <<-'EOF'
+	qtree 1
+	universe 0 0 8
+	ring 1 outer 4
+	v 3.125 4
+	a 4.125 4.5
+	v 3.125 5
+	a 2.875 4.5
+	end 6
+	EOF
+	for f in c m b; do
+		for l in 3 4 5 6; do
+			python3 "$TOP/tests/arcclass.py" $l $f.qt > want
+			qtsplit -l $l $f.qt | awk '
+			    $1 == "node" { print $1, $2, $3, $4, $5 }
+			    $1 == "leaf" { print $1, $2, $3, $4, $5, $9 }' > got
+			diff -u --label "exact $f $l" --label "qtsplit" want got
+		done
+	done
+}
+
 @test "a 2^16-gon and the arcs give the same tree at level 8; a 64-gon does not" {
 	# the circle of radius 1 around (2, 2): the 2^16-gon's chord error,
 	# 1 - cos(pi / 2^16) = 1.2e-9, reaches no cell that the circle does
