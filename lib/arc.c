@@ -404,15 +404,15 @@ powerat(const struct arc *a, double x, double y)
 
 /*
  * The sign of f at a point whose squared distance from (cx, cy) rounds to
- * g, when the filter can tell it, else 0.  (cx, cy) is within ec sqrt(2)
+ * g, when the filter can tell it, else 0: tin and tout are the arc's.  (cx, cy) is within ec sqrt(2)
  * of C; tin and tout allow for it.
  */
 static inline int
-powerfilter(const struct arc *a, double g)
+powerfilter(double g, double tin, double tout)
 {
-	if (g * (1 - 0x1p-40) > a->tout + 0x1p-1000)
+	if (g * (1 - 0x1p-40) > tout + 0x1p-1000)
 		return 1;
-	if (g * (1 + 0x1p-40) + 0x1p-1000 < a->tin)
+	if (g * (1 + 0x1p-40) + 0x1p-1000 < tin)
 		return -1;
 	return 0;
 }
@@ -427,7 +427,7 @@ arc_power(const struct arc *a, double x, double y)
 	double dx = x - a->cx, dy = y - a->cy;
 	int s;
 
-	if ((s = powerfilter(a, dx * dx + dy * dy)) != 0)
+	if ((s = powerfilter(dx * dx + dy * dy, a->tin, a->tout)) != 0)
 		return s;
 	px = iv_diff(x, a->a.x), py = iv_diff(y, a->a.y);
 	v = iv_sub(iv_mul(a->id, iv_add(iv_mul(px, px), iv_mul(py, py))),
@@ -458,7 +458,8 @@ void
 arc_powergrid(const struct arc *a, const double gx[3], const double gy[3],
     signed char f[9])
 {
-	double dx2[3], dy2[3];
+	/* copies: a store to f, chars, could change *a for all C knows */
+	double dx2[3], dy2[3], tin = a->tin, tout = a->tout;
 	int i, j;
 
 	for (i = 0; i < 3; i++) {
@@ -469,7 +470,7 @@ arc_powergrid(const struct arc *a, const double gx[3], const double gy[3],
 	}
 	for (j = 0; j < 3; j++)
 		for (i = 0; i < 3; i++) {
-			int s = powerfilter(a, dx2[i] + dy2[j]);
+			int s = powerfilter(dx2[i] + dy2[j], tin, tout);
 
 			f[3 * j + i] = s != 0 ? s : arc_power(a, gx[i], gy[j]);
 		}
@@ -703,10 +704,13 @@ arc_nearpower(const struct arc *a, double x0, double y0, double x1,
 	double zx = 0, zy = 0;
 
 	{	/* the disc surely misses K: the filter of arc_power */
-		double dx = fmax(fmax(x0 - a->cx, a->cx - x1), 0);
-		double dy = fmax(fmax(y0 - a->cy, a->cy - y1), 0);
+		double l = x0 - a->cx, r = a->cx - x1, b = y0 - a->cy;
+		double t = a->cy - y1;
+		/* comparisons, not fmax, which libm does not inline */
+		double dx = (l > r ? l : r) - a->ec, dy = (b > t ? b : t) - a->ec;
 
-		dx = fmax(dx - a->ec, 0), dy = fmax(dy - a->ec, 0);
+		dx = dx > 0 ? dx : 0;
+		dy = dy > 0 ? dy : 0;
 		if ((dx * dx + dy * dy) * (1 - 0x1p-40) > a->tout + 0x1p-1000)
 			return 1;
 	}

@@ -21,7 +21,9 @@
  * the parity flips between two points when one lies in the segment and the
  * other does not.  An arc that misses a cell's interior leaves the two
  * counts equal there, since inside the cell the segment's boundary is the
- * chord alone: only the cell's listed arcs need the segment test.
+ * chord alone: only the cell's listed arcs need the segment test.  In a
+ * cell that lies strictly on an arc's side of its chord line, the arc is
+ * its whole circle: the powers at the children's corners decide it alone.
  */
 #include <math.h>
 #include <stdint.h>
@@ -339,24 +341,32 @@ circlechildren(const struct arc *a, const double gx[3], const double gy[3],
     const int inx[2], const int iny[2], int par[3])
 {
 	static const int pt[4] = { 0, 1, 3, 4 };	/* the paths' ends */
-	signed char f[9], cf[4];
-	int q, c, m = 0, seg[4];
+	signed char f[9];
+	unsigned out = 0, in = 0;	/* bit g: grid point g outside, inside */
+	int q, c, g, m = 0, seg[4];
 
 	arc_powergrid(a, gx, gy, f);
+	for (g = 0; g < 9; g++) {
+		out |= (unsigned)(f[g] > 0) << g;
+		in |= (unsigned)(f[g] < 0) << g;
+	}
 	for (q = 0; q < 4; q++) {
-		int i = q & 1, j = q >> 1, g = 3 * j + i, out = 0, in = 0;
+		int i = q & 1, j = q >> 1;
+		unsigned corners = 033u << (3 * j + i);	/* g, g + 1, g + 3, g + 4 */
 
-		if (!inx[i] || !iny[j])
+		if (!inx[i] || !iny[j] || !(out & corners))
 			continue;
-		cf[0] = f[g], cf[1] = f[g + 1], cf[2] = f[g + 3];
-		cf[3] = f[g + 4];
-		for (c = 0; c < 4; c++) {
-			out |= cf[c] > 0;
-			in |= cf[c] < 0;
+		if (!(in & corners)) {
+			signed char cf[4];
+
+			g = 3 * j + i;
+			cf[0] = f[g], cf[1] = f[g + 1];
+			cf[2] = f[g + 3], cf[3] = f[g + 4];
+			if (arc_nearpower(a, gx[i], gy[j], gx[i + 1], gy[j + 1],
+			    NULL, cf, NULL) >= 0)
+				continue;
 		}
-		if (out && (in || arc_nearpower(a, gx[i], gy[j], gx[i + 1],
-		    gy[j + 1], NULL, cf, NULL) < 0))
-			m |= 1 << q;
+		m |= 1 << q;
 	}
 	for (c = 0; c < 4; c++) {
 		int g = pt[c];
