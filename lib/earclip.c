@@ -1,13 +1,14 @@
 /*
  * Triangles of a region given as loops: outer loops counter-clockwise,
- * holes clockwise, each hole inside an outer loop and touching nothing,
- * as cut_loops gives the region inside a cell.  Every triangle's corners
+ * holes clockwise, each hole inside an outer loop, touching it at most at
+ * a vertex, as cut_loops gives the region inside a cell.  Every triangle's corners
  * are loop vertices and every loop vertex is a corner, so that a vertex
  * along a side (where a neighbour's vertex lies) stays one.
  *
- * Each hole is joined to the outer loop around it by a bridge, a segment
- * from its rightmost vertex to an outer vertex that sees it, walked there
- * and back: the loop stays one, weakly simple.  Then ears are cut off one
+ * Each hole is joined to the outer loop around it where it touches it,
+ * or else by a bridge, a segment from its rightmost vertex to an outer
+ * vertex that sees it, walked there and back: the loop stays one, weakly
+ * simple.  Then ears are cut off one
  * by one: a vertex whose neighbours turn strictly left at it and whose
  * triangle, closed, holds no other vertex of the loop but copies of its
  * own three (the bridges' ends).  Every test is an exact orientation, so
