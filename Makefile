@@ -13,7 +13,7 @@ BIN = polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance qtbool
 MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
 	man/qt2svg.1 man/qtcat.1 man/qtmesh.1 man/qtbalance.1 man/qtbool.1
 MAN5 = man/qtree.5
-LIBOBJ = lib/msg.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
+LIBOBJ = lib/msg.o lib/hugepage.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
 	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
 	lib/pow5.o lib/op.o lib/arc.o lib/cut.o lib/earclip.o
 

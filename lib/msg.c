@@ -96,7 +96,10 @@ xreallocarray(void *p, size_t n, size_t size)
 	return p;
 }
 
-/* Zeroed memory; large blocks come as fresh pages, never written. */
+/*
+ * Zeroed memory; large blocks come as fresh pages, never written, and are
+ * the tables probed at random: asked for on huge pages.
+ */
 void *
 xcalloc(size_t n, size_t size)
 {
@@ -104,6 +107,7 @@ xcalloc(size_t n, size_t size)
 
 	if (p == NULL)
 		die(1, "out of memory");
+	hugepages(p, n * size);
 	return p;
 }
 

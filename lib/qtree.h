@@ -31,6 +31,7 @@ void	 warnat(const char *, long, const char *, ...);
 void	*xmalloc(size_t);
 void	*xreallocarray(void *, size_t, size_t);
 void	*xcalloc(size_t, size_t);
+void	 hugepages(void *, size_t);
 char	*xstrdup(const char *);
 FILE	*openin(const char *, const char **);
 void	 progress(int, const char *, ...);
