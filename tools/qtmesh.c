@@ -992,6 +992,18 @@ ringalong(struct point a, struct point b)
 	return 0;
 }
 
+/* Every element's sides, each as its element runs, into m. */
+static void
+putsides(struct sidemap *m)
+{
+	size_t i;
+	int k, n;
+
+	for (i = 0; i < nelems; i++)
+		for (n = nverts(&elems[i]), k = 0; k < n; k++)
+			sideput(m, elems[i].v[k], elems[i].v[(k + 1) % n], 1);
+}
+
 /*
  * The sides of one element only, the boundary of the region, each with
  * its ring: the loop's when a piece of a ring edge gave it, found among
@@ -1004,10 +1016,7 @@ bfitboundary(void)
 	uint32_t a, b, ring;
 	int k, n;
 
-	for (i = 0; i < nelems; i++)
-		for (n = nverts(&elems[i]), k = 0; k < n; k++)
-			sideput(&allsides, elems[i].v[k], elems[i].v[(k + 1) % n],
-			    1);
+	putsides(&allsides);
 	for (i = 0; i < nelems; i++)
 		for (n = nverts(&elems[i]), k = 0; k < n; k++) {
 			a = elems[i].v[k];
@@ -1104,9 +1113,7 @@ markboundary(void)
 	int k, n;
 
 	vbnd = xcalloc(nbv + 1, 1);
-	for (i = 0; i < nelems; i++)
-		for (n = nverts(&elems[i]), k = 0; k < n; k++)
-			sideput(&m, elems[i].v[k], elems[i].v[(k + 1) % n], 1);
+	putsides(&m);
 	for (i = 0; i < nelems; i++)
 		for (n = nverts(&elems[i]), k = 0; k < n; k++)
 			if (sideget(&m, elems[i].v[(k + 1) % n],
