@@ -175,6 +175,114 @@ area2='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	! grep -q '^end ' <<< "$output"
 }
 
+# Two triangles, universe [0,4]^2 at level 3 (cells 0.5 wide): A (0.5,0.5)
+# (3.5,3.5) (0.5,3.5) and B (1,3) (3,1) (2.25,3.25).  B's edge x + y = 4
+# meets A's y = x at (2,2); B's edge from (3,1) to (2.25,3.25), direction
+# 1.5 (-0.5,1.5), meets it at (2.5,2.5) (s = 2/3).  Both points are grid
+# corners inside both edges, and each edge there passes through the two
+# cells the other does not (A's the south-west and north-east of the
+# corner, B's the others): no leaf holds both, so no leaf's loops fail.
+crossing_at_corners() {
+	cat <<-'EOF'
+	qtree 1
+	universe 0 0 4
+	level 3
+	ring 1 outer 3
+	v 0.5 0.5
+	v 3.5 3.5
+	v 0.5 3.5
+	ring 2 outer 3
+	v 1 3
+	v 3 1
+	v 2.25 3.25
+	end 10
+	EOF
+}
+
+@test "a piece that clips a cell's corner by less than a double's spacing is flat: no elements, no failure" {
+	# The triangle (0.25 + 2^-54, 1.75) (0.25, 0.25) (1.75, 0.25 + 2^-54)
+	# in [0,4]^2 at level 2: its long edge is x + y = 2 + 2^-54, which
+	# meets the sides of leaf 03, [1,2]^2, at x = 1 + 2^-54 and y = 1 +
+	# 2^-54; both round to 1 (half an ulp of 1, to even), so the piece,
+	# a triangle of area 2^-109, is the point (1,1).  Python checks that
+	# the decimals are those doubles.
+	python3 -c 'a = 0.25 + 2.0 ** -54
+assert float("0.25000000000000006") == a and a != 0.25
+assert 1 + 2.0 ** -54 == 1'
+	printf '0.25000000000000006 1.75\n0.25 0.25\n1.75 0.25000000000000006\n' |
+	    polyread -u 0,0,4 -l 2 | qtsplit | qtbalance > tree.qt
+	grep -q '^leaf 03 2 1 1 1 1 1 P$' tree.qt
+	qtmesh -b tree.qt > mesh.qt
+	bfitcheck mesh.qt
+	# leaf 03 has no element: its number is one past the last one
+	[ "$(grep -c '^elem ' mesh.qt)" -eq 4 ]
+	grep -q '^leaf 03 .* P 5$' mesh.qt
+	qtmesh -b -f msh tree.qt > mesh.msh
+}
+
+@test "the amoeba at levels 9 and 10, where pieces round flat, meshes exactly" {
+	polyread "$SAMPLES/amoeba.brep" > in.qt
+	for l in 9 10; do
+		qtsplit -l $l in.qt | qtbalance > tree.qt
+		qtmesh -b tree.qt > mesh.qt
+		bfitcheck mesh.qt
+	done
+}
+
+@test "rings that cross only at grid corners are refused, and no mesh is written" {
+	crossing_at_corners > cross.qt
+	# polyread, by its own sweep, finds the same crossing
+	awk '$1 == "v" { print $2, $3 } $1 == "ring" && NR > 4 { print "" }' \
+	    cross.qt | polyread -u 0,0,4 > /dev/null 2> poly.err && false
+	grep -q 'crosses' poly.err
+	qtsplit cross.qt > tree.qt
+	for f in qtree msh; do
+		run -1 --separate-stderr qtmesh -b -f "$f" tree.qt
+		[[ "$stderr" == "qtmesh: tree.qt:4: rings 1 and 2 cross at 2 2:"* ||
+		    "$stderr" == "qtmesh: tree.qt:4: rings 1 and 2 cross at 2.5 2.5:"* ]]
+		[ -z "$output" ]
+	done
+}
+
+@test "rings that overlap along a grid line are refused; rings that touch at a point are not" {
+	# A [1,2]x[1,3] and B [2,3]x[2,3.5] share x = 2 from y = 2 to 3:
+	# there neither is the region's boundary, and at (2,2) A's side
+	# comes in with none of A's going out.
+	cat > overlap.qt <<-'EOF'
+	qtree 1
+	universe 0 0 4
+	level 3
+	ring 1 outer 4
+	v 1 1
+	v 2 1
+	v 2 3
+	v 1 3
+	ring 2 outer 4
+	v 2 2
+	v 3 2
+	v 3 3.5
+	v 2 3.5
+	end 12
+	EOF
+	qtsplit overlap.qt > tree.qt
+	run -1 --separate-stderr qtmesh -b tree.qt
+	[[ "$stderr" == "qtmesh: tree.qt:"[0-9]*": ring "[12]" crosses or overlaps another ring near 2 "[23]":"* ]]
+	! grep -q '^end ' <<< "$output"
+	# B as [2,3]x[3,3.5] touches A at its corner (2,3) alone, as
+	# qtree(5) allows: meshed
+	sed '/^ring 2/,$d' overlap.qt > touch.qt
+	cat >> touch.qt <<-'EOF'
+	ring 2 outer 4
+	v 2 3
+	v 3 3
+	v 3 3.5
+	v 2 3.5
+	end 12
+	EOF
+	qtsplit touch.qt | qtmesh -b > mesh.qt
+	grep -q '^end ' mesh.qt
+}
+
 @test "a tree whose rings are not its own is refused" {
 	printf '0 0\n2 0\n0 2\n' | polyread -l 1 | qtsplit | sed 's/^\(leaf 1 .*\) P$/\1 F/' > tree.qt
 	grep -q '^leaf 1 .* F$' tree.qt

@@ -587,9 +587,13 @@ static struct point *poly;	/* the loops of one leaf, points taken in */
 static size_t npoly, polycap, *plen, nplen, plencap;
 /* per point of lpts and poly: the ring the loop runs along from it, or 0 */
 static size_t *pring, npring, pringcap;
+/* loops of no area, set aside from poly: points, rings and lengths */
+static struct point *flat;
+static size_t nflat, flatcap, *flring, nflring, flringcap, *fllen, nfllen,
+    fllencap;
 /* the rings as read, for sides along grid lines */
 static struct point *rpts;
-static size_t nrpts, rptcap, *rlen, nrlen, rlencap;
+static size_t nrpts, rptcap, *rlen, nrlen, rlencap, *rline, nrline, rlinecap;
 
 /* The vertices of -b, any doubles: a table from point to number. */
 static struct bslot {
@@ -923,7 +927,7 @@ struct sidemap {
 	size_t	 cap, n;
 };
 
-static struct sidemap ringsides, allsides;
+static struct sidemap ringsides;
 
 static size_t
 sideslot(const struct sidemap *m, uint64_t key)
@@ -1005,31 +1009,235 @@ putsides(struct sidemap *m)
 }
 
 /*
- * The sides of one element only, the boundary of the region, each with
- * its ring: the loop's when a piece of a ring edge gave it, found among
- * the rings' edges when it runs along a cell's side.
+ * The sides of one element only, the boundary of the region, each handed
+ * to each() with its ring: the loop's when a piece of a ring edge gave it,
+ * found among the rings' edges when it runs along a cell's side.
  */
 static void
-bfitboundary(void)
+boundarysides(void (*each)(uint32_t, uint32_t, uint32_t))
 {
+	struct sidemap all = { NULL, 0, 0 };
 	size_t i;
 	uint32_t a, b, ring;
 	int k, n;
 
-	putsides(&allsides);
+	putsides(&all);
 	for (i = 0; i < nelems; i++)
 		for (n = nverts(&elems[i]), k = 0; k < n; k++) {
 			a = elems[i].v[k];
 			b = elems[i].v[(k + 1) % n];
-			if (sideget(&allsides, b, a) != 0)
+			if (sideget(&all, b, a) != 0)
 				continue;
-			if ((ring = sideget(&ringsides, a, b)) == 0)
+			/* a piece taken backwards: rings that cross */
+			if ((ring = sideget(&ringsides, a, b)) == 0 &&
+			    (ring = sideget(&ringsides, b, a)) == 0)
 				ring = ringalong(bv[a - 1], bv[b - 1]);
-			addseg(a, b, 0);
-			segs[nsegs - 1].ring = ring;
+			each(a, b, ring);
 		}
-	free(allsides.slot);
+	free(all.slot);
+}
+
+static void
+addringseg(uint32_t a, uint32_t b, uint32_t ring)
+{
+	addseg(a, b, 0);
+	segs[nsegs - 1].ring = ring;
+}
+
+static void
+bfitboundary(void)
+{
+	boundarysides(addringseg);
 	free(ringsides.slot);
+}
+
+/*
+ * Rings that cross or overlap break qtree(5)'s rule, and a stream written
+ * by hand may hold them; polyread refuses them, and so does -b, from the
+ * boundary it meshed, as it would otherwise mesh their even-odd region
+ * without a word.  Where rings cross inside a leaf its loops do not close
+ * (cut_loops); what is left is rings that meet at vertices of the mesh,
+ * grid corners or ring vertices.  At each vertex, every ring's boundary
+ * sides must come in as often as they go out: a ring's side that is no
+ * boundary runs along another ring, overlapping it.  And where two rings
+ * pass through one vertex, the two sides of the one must lie in the same
+ * of the two sectors that the sides of the other cut: rings that touch
+ * there, rather than cross.
+ */
+struct bend {			/* a boundary side at vertex v */
+	uint32_t	v, other;	/* the side's other end */
+	uint32_t	ring;
+	uint32_t	out;		/* 1: it leaves v */
+};
+
+static struct bend *bends;
+static size_t nbends, bendcap;
+
+static void
+addbend(uint32_t v, uint32_t other, uint32_t ring, uint32_t out)
+{
+	bends = grow(bends, &bendcap, nbends, sizeof(*bends));
+	bends[nbends].v = v;
+	bends[nbends].other = other;
+	bends[nbends].ring = ring;
+	bends[nbends++].out = out;
+}
+
+static void
+addbends(uint32_t a, uint32_t b, uint32_t ring)
+{
+	addbend(a, b, ring, 1);
+	addbend(b, a, ring, 0);
+}
+
+static int
+cmpbend(const void *va, const void *vb)
+{
+	const struct bend *a = va, *b = vb;
+
+	if (a->v != b->v)
+		return a->v < b->v ? -1 : 1;
+	if (a->ring != b->ring)
+		return a->ring < b->ring ? -1 : 1;
+	return (a->out > b->out) - (a->out < b->out);
+}
+
+static int
+turn(struct point o, struct point p, struct point q)
+{
+	return orient2d(o.x, o.y, p.x, p.y, q.x, q.y);
+}
+
+/*
+ * Is q strictly inside the sector swept counter-clockwise from ray o-p to
+ * ray o-r?  No two of the rays point the same way: the sides of a mesh
+ * meet at vertices alone.
+ */
+static int
+insector(struct point o, struct point p, struct point r, struct point q)
+{
+	int pr = turn(o, p, r);
+
+	if (pr > 0)
+		return turn(o, p, q) > 0 && turn(o, q, r) > 0;
+	if (pr == 0)		/* r opposite p: a half plane */
+		return turn(o, p, q) > 0;
+	return !(turn(o, r, q) >= 0 && turn(o, q, p) >= 0);
+}
+
+/*
+ * Fails on ring r at vertex v: what it does there, with ring r2 or alone
+ * (then what ends in the preposition for the point); r 0 for a boundary
+ * side along no ring.
+ */
+static void
+ringsfail(uint32_t v, uint32_t r, const char *what, uint32_t r2)
+{
+	char px[32], py[32];
+
+	fmtreal(px, bv[v - 1].x);
+	fmtreal(py, bv[v - 1].y);
+	if (r == 0)
+		errat(inname, 0, "the region's boundary at %s %s runs along no "
+		    "ring: rings that cross or overlap near there?  qtree(5) "
+		    "lets rings touch at points, never cross; no mesh written",
+		    px, py);
+	if (r2 != 0)
+		errat(inname, (long)rline[r - 1], "rings %lu and %lu %s at %s "
+		    "%s: qtree(5) lets rings touch at points, never cross; no "
+		    "mesh written", (unsigned long)r, (unsigned long)r2, what,
+		    px, py);
+	errat(inname, (long)rline[r - 1], "ring %lu %s %s %s: qtree(5) "
+	    "lets rings touch at points, never cross or overlap; no mesh "
+	    "written", (unsigned long)r, what, px, py);
+}
+
+static void
+checkboundary(void)
+{
+	size_t i, j, k, g, z;
+
+	nbends = 0;
+	boundarysides(addbends);
+	qsort(bends, nbends, sizeof(*bends), cmpbend);
+	for (i = 0; i < nbends; i = g) {
+		uint32_t v = bends[i].v;
+
+		for (g = i; g < nbends && bends[g].v == v; g++)
+			continue;
+		/* sides along no ring (0) first, left to the end */
+		for (z = i; z < g && bends[z].ring == 0; z++)
+			continue;
+		/* each ring's sides at v: as many in as out, one of each */
+		for (j = z; j < g; j = k) {
+			size_t out = 0;
+
+			for (k = j; k < g && bends[k].ring == bends[j].ring; k++)
+				out += bends[k].out;
+			if (2 * out != k - j)
+				ringsfail(v, bends[j].ring,
+				    "crosses or overlaps another ring near", 0);
+			if (k - j > 2)
+				ringsfail(v, bends[j].ring, "touches itself at", 0);
+		}
+		/* pairs of in and out, ring by ring: none cuts another's */
+		for (j = z; j < g; j += 2)
+			for (k = j + 2; k < g; k += 2) {
+				struct point o = bv[v - 1];
+				struct point p = bv[bends[j].other - 1];
+				struct point r = bv[bends[j + 1].other - 1];
+
+				if (insector(o, p, r, bv[bends[k].other - 1]) !=
+				    insector(o, p, r, bv[bends[k + 1].other - 1]))
+					ringsfail(v, bends[j].ring, "cross",
+					    bends[k].ring);
+			}
+	}
+	/* neighbours whose pieces disagree: rings that cross near there */
+	for (i = 0; i < nbends; i++)
+		if (bends[i].ring == 0)
+			ringsfail(bends[i].v, 0, "", 0);
+	free(bends);
+	bends = NULL;
+	bendcap = 0;
+}
+
+/*
+ * Is the loop flat, of no area?  Its points are crossings of the cell's
+ * sides rounded to doubles, and a piece of a ring that clips a cell's
+ * corner by less than their spacing rounds to two points, or to points
+ * in a line: no triangle can be cut from it.  Its sides are the ring's,
+ * rounded onto the cell's side, which the neighbour across has.
+ */
+static int
+flatloop(const struct point *p, size_t n)
+{
+	size_t k;
+
+	for (k = 2; k < n; k++)
+		if (orient2d(p[0].x, p[0].y, p[1].x, p[1].y, p[k].x,
+		    p[k].y) != 0)
+			return 0;
+	return 1;
+}
+
+/* Puts the sides along rings of the loops into ringsides. */
+static void
+ringsidesof(const struct point *pt, const size_t *ring, const size_t *len,
+    size_t nloops)
+{
+	size_t j, k, at;
+
+	for (j = at = 0; j < nloops; at += len[j++])
+		for (k = 0; k < len[j]; k++)
+			if (ring[at + k] != 0) {
+				const struct point *p = &pt[at + k];
+				const struct point *q = &pt[at + (k + 1) %
+				    len[j]];
+
+				sideput(&ringsides, bvertex(p->x, p->y),
+				    bvertex(q->x, q->y), ring[at + k]);
+			}
 }
 
 /* The elements of leaf i: its loops, the points on its sides taken in. */
@@ -1058,12 +1266,23 @@ meshbfit(size_t i)
 			else if (p.y == q.y && (p.y == y[0] || p.y == y[1]))
 				takein(hline, nhline, 0, p.y, p.x, q.x);
 		}
+		if (flatloop(poly + start, npoly - start)) {
+			for (k = start; k < npoly; k++) {
+				addpoint(&flat, &nflat, &flatcap, poly[k].x,
+				    poly[k].y);
+				addsize(&flring, &nflring, &flringcap,
+				    pring[k]);
+			}
+			addsize(&fllen, &nfllen, &fllencap, npoly - start);
+			npoly = npring = start;
+			continue;
+		}
 		plen = grow(plen, &plencap, nplen, sizeof(*plen));
 		plen[nplen++] = npoly - start;
 	}
 	if (l->class == 'F' && bfittemplate(l, x, y))
 		return;
-	ntri = ear_region(ear, poly, plen, nplen, &tri);
+	ntri = nplen > 0 ? ear_region(ear, poly, plen, nplen, &tri) : 0;
 	if (ntri == (size_t)-1)
 		errat(inname, l->lineno, "leaf %s: its part of the region "
 		    "cannot be cut into triangles (rings that cross or touch "
@@ -1076,16 +1295,10 @@ meshbfit(size_t i)
 		addbelem(v, 3);
 	}
 	/* the sides along rings, their vertices numbered by now */
-	for (j = at = 0; j < nplen; at += plen[j++])
-		for (k = 0; k < plen[j]; k++)
-			if (pring[at + k] != 0) {
-				const struct point *p = &poly[at + k];
-				const struct point *q = &poly[at + (k + 1) %
-				    plen[j]];
-
-				sideput(&ringsides, bvertex(p->x, p->y),
-				    bvertex(q->x, q->y), pring[at + k]);
-			}
+	ringsidesof(poly, pring, plen, nplen);
+	/* a flat loop's, which neighbours' elements have along their sides */
+	ringsidesof(flat, flring, fllen, nfllen);
+	nflat = nflring = nfllen = 0;
 }
 
 /*
@@ -1532,6 +1745,7 @@ bfitmesh(void)
 		meshbfit(i);
 	}
 	elstart[nleaves] = nelems;
+	checkboundary();
 	if (tfrac > 0)
 		jointiny();
 	ear_free(ear);
@@ -2148,6 +2362,8 @@ main(int argc, char *argv[])
 					addpoint(&rpts, &nrpts, &rptcap,
 					    rec.ring.v[i].x, rec.ring.v[i].y);
 				addsize(&rlen, &nrlen, &rlencap, rec.ring.n);
+				addsize(&rline, &nrline, &rlinecap,
+				    (size_t)rec.lineno);
 			}
 			if (head)
 				qt_ring(&rec.ring);
