@@ -652,15 +652,6 @@ bvertex(double x, double y)
 	return btab[k].id;
 }
 
-/* Is p in the box of the segment from a to b, closed? */
-static int
-inbox(struct point p, struct point a, struct point b)
-{
-	return (a.x < b.x ? a.x <= p.x && p.x <= b.x : b.x <= p.x &&
-	    p.x <= a.x) && (a.y < b.y ? a.y <= p.y && p.y <= b.y :
-	    b.y <= p.y && p.y <= a.y);
-}
-
 static void
 leafbox(const struct leaf *l, double x[2], double y[2])
 {
@@ -974,6 +965,60 @@ sideget(const struct sidemap *m, uint32_t a, uint32_t b)
 }
 
 /*
+ * The rings' edges along vertical lines (axis 0, line the x) and level
+ * ones (axis 1), sorted by line and then lower end, for ringalong: a
+ * boundary side that no loop piece gave runs along a cell's side, and
+ * only an edge along that grid line can hold it.
+ */
+struct lineedge {
+	double		line, lo, hi;
+	uint32_t	ring;
+};
+static struct lineedge *axedge[2];
+static size_t naxedge[2], axedgecap[2];
+static int axindexed;
+
+static int
+cmplineedge(const void *va, const void *vb)
+{
+	const struct lineedge *a = va, *b = vb;
+
+	if (a->line != b->line)
+		return a->line < b->line ? -1 : 1;
+	return (a->lo > b->lo) - (a->lo < b->lo);
+}
+
+static void
+indexaxes(void)
+{
+	size_t r, k, at = 0;
+	int axis;
+
+	for (r = 0; r < nrlen; at += rlen[r++])
+		for (k = 0; k < rlen[r]; k++) {
+			struct point p = rpts[at + k];
+			struct point q = rpts[at + (k + 1) % rlen[r]];
+			struct lineedge *e;
+
+			if (p.x != q.x && p.y != q.y)
+				continue;
+			axis = p.x != q.x;
+			axedge[axis] = grow(axedge[axis], &axedgecap[axis],
+			    naxedge[axis], sizeof(*axedge[axis]));
+			e = &axedge[axis][naxedge[axis]++];
+			e->line = axis ? p.y : p.x;
+			e->lo = axis ? fmin(p.x, q.x) : fmin(p.y, q.y);
+			e->hi = axis ? fmax(p.x, q.x) : fmax(p.y, q.y);
+			e->ring = (uint32_t)r + 1;
+		}
+	for (axis = 0; axis < 2; axis++)
+		if (naxedge[axis] > 0)
+			qsort(axedge[axis], naxedge[axis],
+			    sizeof(*axedge[axis]), cmplineedge);
+	axindexed = 1;
+}
+
+/*
  * The ring that a boundary side along a grid line runs along: one of its
  * edges holds both ends, exactly.  0 for none, which the rings of a valid
  * tree do not leave.
@@ -981,18 +1026,30 @@ sideget(const struct sidemap *m, uint32_t a, uint32_t b)
 static uint32_t
 ringalong(struct point a, struct point b)
 {
-	size_t r, k, at = 0;
+	int axis = a.x != b.x;
+	double line = axis ? a.y : a.x;
+	double lo = axis ? fmin(a.x, b.x) : fmin(a.y, b.y);
+	double hi = axis ? fmax(a.x, b.x) : fmax(a.y, b.y);
+	const struct lineedge *e;
+	size_t first = 0, n;
 
-	for (r = 0; r < nrlen; at += rlen[r++])
-		for (k = 0; k < rlen[r]; k++) {
-			struct point p = rpts[at + k];
-			struct point q = rpts[at + (k + 1) % rlen[r]];
+	if (a.x != b.x && a.y != b.y)
+		return 0;
+	if (!axindexed)
+		indexaxes();
+	e = axedge[axis];
+	n = naxedge[axis];
+	while (first < n) {	/* the first edge on the line */
+		size_t mid = first + (n - first) / 2;
 
-			if (orient2d(p.x, p.y, q.x, q.y, a.x, a.y) == 0 &&
-			    orient2d(p.x, p.y, q.x, q.y, b.x, b.y) == 0 &&
-			    inbox(a, p, q) && inbox(b, p, q))
-				return r + 1;
-		}
+		if (e[mid].line < line)
+			first = mid + 1;
+		else
+			n = mid;
+	}
+	for (n = naxedge[axis]; first < n && e[first].line == line; first++)
+		if (e[first].lo <= lo && hi <= e[first].hi)
+			return e[first].ring;
 	return 0;
 }
 

@@ -310,6 +310,7 @@ addvertex(struct input *in, struct inring *r, double x, double y, long line)
 		r->cap = r->cap ? 2 * r->cap : 4;
 		r->v = xreallocarray(r->v, r->cap, sizeof(*r->v));
 		r->line = xreallocarray(r->line, r->cap, sizeof(*r->line));
+		hugepages(r->v, r->cap * sizeof(*r->v));	/* the sweep's */
 	}
 	r->v[r->n].x = x;
 	r->v[r->n].y = y;
