@@ -12,8 +12,10 @@
  * its rounding error, so no rounding mode is changed and underflow and
  * overflow only widen it), and when the interval holds 0, exactly, in
  * integers: a coordinate within QT_COORD_MIN..QT_COORD_MAX is an integer
- * times 2^-BIGSHIFT, and the products of eight such integers fit BIGN
- * limbs (polyread's line tests are of degree 8, qtsplit's of 6).
+ * times 2^-BIGSHIFT, a difference of two below 2^734, and the products of
+ * sixteen such differences, with the few bits their sums add, fit BIGN
+ * limbs (polyread's two circles are of degree 16, its line tests of 8,
+ * qtsplit's of 6).
  *
  * The arc is the part of its circle on M's side of the chord line AB, with
  * A and B.  So a point p lies inside the circular segment (the region
@@ -30,7 +32,7 @@
 
 /* Integers of at most BIGN 32-bit limbs, sign and magnitude. */
 #define BIGSHIFT	400
-#define BIGN		220
+#define BIGN		384
 
 struct big {
 	int		 neg, n;	/* n limbs, the top one nonzero */
@@ -1038,4 +1040,140 @@ arc_powertoward(const struct arc *a, struct point p, struct point t)
 	if ((s = arc_dotcentre(a, p, t)) != 0)
 		return -s;
 	return 1;
+}
+
+/*
+ * Where the roots t1 <= t2 of a quadratic g along a line lie against a
+ * point s of the line, r[j] < 0 before it, 0 at it, > 0 past it, from the
+ * sign gs of g at s and the sign ts of the middle of the roots past s.
+ */
+void
+arc_rootsat(int gs, int ts, int r[2])
+{
+	if (gs < 0)
+		r[0] = -1, r[1] = 1;
+	else if (gs == 0)
+		r[0] = ts > 0 ? 0 : ts < 0 ? -1 : 0,
+		r[1] = ts > 0 ? 1 : 0;
+	else
+		r[0] = r[1] = ts;
+}
+
+static void
+big_neg(struct big *z)
+{
+	if (z->n > 0)
+		z->neg = !z->neg;
+}
+
+/*
+ * The common points of the circles of a1 and a2, two circles that differ:
+ * how many (0, 1 where they are tangent, 2), and for each, in the order
+ * right of the line from C1 to C2, then left, side[i][j] the sign of
+ * orient2d(A, B, X) times the side of M, A, M and B arc j's points: 1
+ * inside arc j, 0 at an end, -1 off it.
+ *
+ * Positions are taken from A1.  Times D_i, circle i's power is P_i(x) =
+ * D_i |x - A_i|^2 - (x - A_i) . U_i, and the common points lie on the
+ * radical line L(x) = D2 P1(x) - D1 P2(x) = n . x - k, n = 2 D1 D2 e +
+ * D1 U2 - D2 U1 (= 2 D1 D2 (C2 - C1)), k = D1 P2(A1), e = A2 - A1.  The
+ * line cuts circle 1 as its distance from C1, |g| / 2 |D1| |n| with g =
+ * 2 D1 k - n . U1, is below r1 = |U1| / 2 |D1|: the sign of |U1|^2 |n|^2 -
+ * g^2 tells 0, 1 or 2 points.  Each chord line AB of arc j not parallel to
+ * the radical line meets it at Y = A + tau (B - A), tau = -L(A) / n . b;
+ * the power there is tau (tau - 1) |b|^2, so the sign of the other
+ * circle's power at A times that at B, and the points lie against Y as
+ * the foot F of the centres does when Y is outside: along rot90(n), (F -
+ * Y) . rot90(n) = cross(n, C - Y), times 2 D n . b,
+ *
+ *	cross(n, U) (n . b) + 2 D L(A) cross(n, b),
+ *
+ * and orient2d(A, B, X) is the sign of X past Y times n . b.  A chord
+ * parallel to the radical line has both points on the side cross(n, b)
+ * L(A) says.  Degree 16 at most, in the differences of the input.
+ */
+int
+arc_circlesmeet(const struct arc *a1, const struct arc *a2, int side[2][2])
+{
+	struct bigarc z[2];
+	struct big ex, ey, e2, k, nx, ny, g, la[2], t, u;
+	int i, j, nroots, s;
+
+	bigarc(a1, &z[0]);
+	bigarc(a2, &z[1]);
+	big_diff(&ex, a2->a.x, a1->a.x);
+	big_diff(&ey, a2->a.y, a1->a.y);
+	big_dot(&e2, &ex, &ey, &ex, &ey, 0);
+	/* L(A1) = -D1 P2(A1) = -k, L(A2) = D2 P1(A2) */
+	big_mul(&k, &z[1].d, &e2);
+	big_dot(&t, &ex, &ey, &z[1].ux, &z[1].uy, 0);
+	big_addsub(&k, &k, &t, 1);
+	big_mul(&k, &k, &z[0].d);
+	la[0] = k;
+	big_neg(&la[0]);
+	big_mul(&la[1], &z[0].d, &e2);
+	big_dot(&t, &ex, &ey, &z[0].ux, &z[0].uy, 0);
+	big_addsub(&la[1], &la[1], &t, -1);
+	big_mul(&la[1], &la[1], &z[1].d);
+	big_mul(&g, &z[0].d, &z[1].d);
+	big_addsub(&g, &g, &g, 1);
+	big_mul(&nx, &g, &ex);
+	big_mul(&ny, &g, &ey);
+	big_mul(&t, &z[0].d, &z[1].ux);
+	big_addsub(&nx, &nx, &t, 1);
+	big_mul(&t, &z[1].d, &z[0].ux);
+	big_addsub(&nx, &nx, &t, -1);
+	big_mul(&t, &z[0].d, &z[1].uy);
+	big_addsub(&ny, &ny, &t, 1);
+	big_mul(&t, &z[1].d, &z[0].uy);
+	big_addsub(&ny, &ny, &t, -1);
+	if (big_sign(&nx) == 0 && big_sign(&ny) == 0)
+		return 0;	/* one centre, two radii */
+	big_mul(&g, &z[0].d, &k);
+	big_addsub(&g, &g, &g, 1);
+	big_dot(&t, &nx, &ny, &z[0].ux, &z[0].uy, 0);
+	big_addsub(&g, &g, &t, -1);
+	big_dot(&t, &z[0].ux, &z[0].uy, &z[0].ux, &z[0].uy, 0);
+	big_dot(&u, &nx, &ny, &nx, &ny, 0);
+	big_mul(&t, &t, &u);
+	big_mul(&u, &g, &g);
+	big_addsub(&t, &t, &u, -1);
+	if ((s = big_sign(&t)) < 0)
+		return 0;
+	nroots = s > 0 ? 2 : 1;
+	for (j = 0; j < 2; j++) {
+		const struct arc *a = j ? a2 : a1, *o = j ? a1 : a2;
+		struct big c, nb, w;
+		int kd, gs, ts = 0, r[2];
+
+		big_dot(&nb, &nx, &ny, &z[j].bx, &z[j].by, 0);
+		big_dot(&c, &nx, &ny, &z[j].bx, &z[j].by, 1);
+		if ((kd = big_sign(&nb)) == 0) {
+			s = big_sign(&c) * big_sign(&la[j]) * a->sd;
+			side[0][j] = side[1][j] = s;
+			continue;
+		}
+		gs = arc_power(o, a->a.x, a->a.y) * arc_power(o, a->b.x,
+		    a->b.y);
+		if (gs >= 0) {
+			big_dot(&w, &nx, &ny, &z[j].ux, &z[j].uy, 1);
+			big_mul(&w, &w, &nb);
+			big_mul(&t, &z[j].d, &la[j]);
+			big_addsub(&t, &t, &t, 1);
+			big_mul(&t, &t, &c);
+			big_addsub(&w, &w, &t, 1);
+			ts = big_sign(&w) * a->sd * kd;
+		}
+		arc_rootsat(gs, ts, r);
+		for (i = 0; i < 2; i++)
+			side[i][j] = r[i] * kd * a->sd;
+	}
+	/* the roots run along rot90(n), the sign of D1 D2 times C1 -> C2's */
+	if (a1->sd * a2->sd < 0)
+		for (j = 0; j < 2; j++) {
+			s = side[0][j];
+			side[0][j] = side[1][j];
+			side[1][j] = s;
+		}
+	return nroots;
 }
