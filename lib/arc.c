@@ -23,6 +23,7 @@
  * strictly on M's side of the chord: the sign f(p) of |p - C|^2 - r^2 and
  * orient2d(A, B, p).
  */
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -264,8 +265,43 @@ struct bigarc {
 	struct big	 bx, by, mx, my, d, ux, uy;
 };
 
+/* z / 2^s, z a multiple of 2^s */
 static void
-bigarc(const struct arc *a, struct bigarc *z)
+big_shr(struct big *z, int s)
+{
+	int w = s / 32, b = s % 32, i;
+
+	if (s == 0)
+		return;
+	if (w >= z->n) {
+		z->n = z->neg = 0;
+		return;
+	}
+	for (i = 0; i + w < z->n; i++)
+		z->d[i] = (z->d[i + w] >> b) | (b > 0 && i + w + 1 < z->n ?
+		    z->d[i + w + 1] << (32 - b) : 0);
+	z->n -= w;
+	while (z->n > 0 && z->d[z->n - 1] == 0)
+		z->n--;
+	if (z->n == 0)
+		z->neg = 0;
+}
+
+/* The exponent of v's lowest set bit, v != 0: v is a multiple of 2^that. */
+static int
+lowbit(double v)
+{
+	int e, b;
+	uint64_t m = (uint64_t)ldexp(frexp(fabs(v), &e), 53);
+
+	for (b = e - 53; (m & 1) == 0; m >>= 1)
+		b++;
+	return b;
+}
+
+/* bigarc of the differences divided by 2^s, which they are multiples of */
+static void
+bigarcshift(const struct arc *a, struct bigarc *z, int s)
 {
 	struct big b2, m2, t;
 
@@ -273,6 +309,10 @@ bigarc(const struct arc *a, struct bigarc *z)
 	big_diff(&z->by, a->b.y, a->a.y);
 	big_diff(&z->mx, a->m.x, a->a.x);
 	big_diff(&z->my, a->m.y, a->a.y);
+	big_shr(&z->bx, s);
+	big_shr(&z->by, s);
+	big_shr(&z->mx, s);
+	big_shr(&z->my, s);
 	big_mul(&z->d, &z->bx, &z->my);
 	big_mul(&t, &z->by, &z->mx);
 	big_addsub(&z->d, &z->d, &t, -1);
@@ -288,6 +328,12 @@ bigarc(const struct arc *a, struct bigarc *z)
 	big_mul(&z->uy, &z->bx, &m2);
 	big_mul(&t, &z->mx, &b2);
 	big_addsub(&z->uy, &z->uy, &t, -1);
+}
+
+static void
+bigarc(const struct arc *a, struct bigarc *z)
+{
+	bigarcshift(a, z, 0);
 }
 
 /*
@@ -1095,14 +1141,30 @@ big_neg(struct big *z)
 int
 arc_circlesmeet(const struct arc *a1, const struct arc *a2, int side[2][2])
 {
+	const struct point *p[6] = { &a1->a, &a1->m, &a1->b, &a2->a, &a2->m,
+	    &a2->b };
 	struct bigarc z[2];
 	struct big ex, ey, e2, k, nx, ny, g, la[2], t, u;
-	int i, j, nroots, s;
+	int i, j, nroots, s, low = INT_MAX;
 
-	bigarc(a1, &z[0]);
-	bigarc(a2, &z[1]);
+	/*
+	 * Every sign below is of a homogeneous polynomial in differences of
+	 * coordinates, all multiples of 2^low: divided by it, the integers
+	 * are as short as the input's spread of digits, not BIGSHIFT longer.
+	 */
+	for (i = 0; i < 6; i++) {
+		if (p[i]->x != 0 && lowbit(p[i]->x) < low)
+			low = lowbit(p[i]->x);
+		if (p[i]->y != 0 && lowbit(p[i]->y) < low)
+			low = lowbit(p[i]->y);
+	}
+	low = low == INT_MAX ? 0 : low + BIGSHIFT;
+	bigarcshift(a1, &z[0], low);
+	bigarcshift(a2, &z[1], low);
 	big_diff(&ex, a2->a.x, a1->a.x);
 	big_diff(&ey, a2->a.y, a1->a.y);
+	big_shr(&ex, low);
+	big_shr(&ey, low);
 	big_dot(&e2, &ex, &ey, &ex, &ey, 0);
 	/* L(A1) = -D1 P2(A1) = -k, L(A2) = D2 P1(A2) */
 	big_mul(&k, &z[1].d, &e2);

@@ -378,10 +378,9 @@ body() {
 	[[ "$stderr" == "polyread: e15.000000000000002.xy:1: ring 1 edge 1 (line 1) crosses ring 2 edge 1 (line 6) at 20 15" ]]
 }
 
-@test "two circles: tangent circles of coordinates near 2^169 fit the exact integers" {
+@test "two circles: tangent circles near 2^169, and circles from 2^163 to 2^-300, fit the exact integers" {
 	# the tangent hole above scaled by 2^166, the largest power of two
-	# whose arcs polyread bounds; the exact test takes products of
-	# sixteen differences of about 570 bits
+	# whose arcs polyread bounds
 	awk 'BEGIN { s = 2 ^ 166 } /^$/ { print; next }
 	    $1 == "arc" { printf "arc %.17g %.17g\n", $2 * s, $3 * s; next }
 	    { printf "%.17g %.17g\n", $1 * s, $2 * s }' > b.xy <<-EOT
@@ -398,5 +397,23 @@ body() {
 	arc 9 -3
 	EOT
 	polyread b.xy | awk '$1 == "ring" { print $2, $3 }' > got
+	printf '1 outer\n2 hole\n' | diff -u - got
+	# scaled by 2^160, the hole's first arc through 2^-300 2^-300 for 0
+	# 0: its circle no longer tangent, the integers span 2^163 to 2^-300
+	# (232 limbs of 32 bits in the degree-16 products); the common points
+	# lie near 10 0, off that arc
+	python3 - > s.xy <<-'PY'
+	s, t = 2.0 ** 160, 2.0 ** -300
+	for x, y, arc in ((6, 8, ""), (-6, 8, "arc "), (-10, 0, ""),
+	    (-6, -8, "arc "), (6, -8, ""), (8, -6, "arc ")):
+	    print("%s%r %r" % (arc, x * s, y * s))
+	print("\n%r %r\narc %r %r\n%r %r\narc %r %r" % (8 * s, 4 * s, t, t,
+	    2 * s, -4 * s, 9 * s, -3 * s))
+	PY
+	python3 "$TOP/tests/twocircles.py" $(sed -n 5p s.xy) \
+	    $(sed -n 6p s.xy | tr -d arc) $(sed -n 1p s.xy) \
+	    $(sed -n '8,10p' s.xy | tr -d arc) | awk '{ print $NF }' > where
+	printf 'two\noff\noff\n' | diff -u - where
+	polyread s.xy | awk '$1 == "ring" { print $2, $3 }' > got
 	printf '1 outer\n2 hole\n' | diff -u - got
 }
