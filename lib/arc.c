@@ -12,8 +12,10 @@
  * its rounding error, so no rounding mode is changed and underflow and
  * overflow only widen it), and when the interval holds 0, exactly, in
  * integers: a coordinate within QT_COORD_MIN..QT_COORD_MAX is an integer
- * times 2^-BIGSHIFT, and the products of eight such integers fit BIGN
- * limbs (polyread's line tests are of degree 8, qtsplit's of 6).
+ * times 2^-BIGSHIFT, a difference of two below 2^734, and the products of
+ * sixteen such differences, with the few bits their sums add, fit BIGN
+ * limbs (polyread's two circles are of degree 16, its line tests of 8,
+ * qtsplit's of 6).
  *
  * The arc is the part of its circle on M's side of the chord line AB, with
  * A and B.  So a point p lies inside the circular segment (the region
@@ -21,6 +23,7 @@
  * strictly on M's side of the chord: the sign f(p) of |p - C|^2 - r^2 and
  * orient2d(A, B, p).
  */
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -30,7 +33,7 @@
 
 /* Integers of at most BIGN 32-bit limbs, sign and magnitude. */
 #define BIGSHIFT	400
-#define BIGN		220
+#define BIGN		384
 
 struct big {
 	int		 neg, n;	/* n limbs, the top one nonzero */
@@ -262,8 +265,43 @@ struct bigarc {
 	struct big	 bx, by, mx, my, d, ux, uy;
 };
 
+/* z / 2^s, z a multiple of 2^s */
 static void
-bigarc(const struct arc *a, struct bigarc *z)
+big_shr(struct big *z, int s)
+{
+	int w = s / 32, b = s % 32, i;
+
+	if (s == 0)
+		return;
+	if (w >= z->n) {
+		z->n = z->neg = 0;
+		return;
+	}
+	for (i = 0; i + w < z->n; i++)
+		z->d[i] = (z->d[i + w] >> b) | (b > 0 && i + w + 1 < z->n ?
+		    z->d[i + w + 1] << (32 - b) : 0);
+	z->n -= w;
+	while (z->n > 0 && z->d[z->n - 1] == 0)
+		z->n--;
+	if (z->n == 0)
+		z->neg = 0;
+}
+
+/* The exponent of v's lowest set bit, v != 0: v is a multiple of 2^that. */
+static int
+lowbit(double v)
+{
+	int e, b;
+	uint64_t m = (uint64_t)ldexp(frexp(fabs(v), &e), 53);
+
+	for (b = e - 53; (m & 1) == 0; m >>= 1)
+		b++;
+	return b;
+}
+
+/* bigarc of the differences divided by 2^s, which they are multiples of */
+static void
+bigarcshift(const struct arc *a, struct bigarc *z, int s)
 {
 	struct big b2, m2, t;
 
@@ -271,6 +309,10 @@ bigarc(const struct arc *a, struct bigarc *z)
 	big_diff(&z->by, a->b.y, a->a.y);
 	big_diff(&z->mx, a->m.x, a->a.x);
 	big_diff(&z->my, a->m.y, a->a.y);
+	big_shr(&z->bx, s);
+	big_shr(&z->by, s);
+	big_shr(&z->mx, s);
+	big_shr(&z->my, s);
 	big_mul(&z->d, &z->bx, &z->my);
 	big_mul(&t, &z->by, &z->mx);
 	big_addsub(&z->d, &z->d, &t, -1);
@@ -286,6 +328,12 @@ bigarc(const struct arc *a, struct bigarc *z)
 	big_mul(&z->uy, &z->bx, &m2);
 	big_mul(&t, &z->mx, &b2);
 	big_addsub(&z->uy, &z->uy, &t, -1);
+}
+
+static void
+bigarc(const struct arc *a, struct bigarc *z)
+{
+	bigarcshift(a, z, 0);
 }
 
 /*
@@ -1038,4 +1086,156 @@ arc_powertoward(const struct arc *a, struct point p, struct point t)
 	if ((s = arc_dotcentre(a, p, t)) != 0)
 		return -s;
 	return 1;
+}
+
+/*
+ * Where the roots t1 <= t2 of a quadratic g along a line lie against a
+ * point s of the line, r[j] < 0 before it, 0 at it, > 0 past it, from the
+ * sign gs of g at s and the sign ts of the middle of the roots past s.
+ */
+void
+arc_rootsat(int gs, int ts, int r[2])
+{
+	if (gs < 0)
+		r[0] = -1, r[1] = 1;
+	else if (gs == 0)
+		r[0] = ts > 0 ? 0 : ts < 0 ? -1 : 0,
+		r[1] = ts > 0 ? 1 : 0;
+	else
+		r[0] = r[1] = ts;
+}
+
+static void
+big_neg(struct big *z)
+{
+	if (z->n > 0)
+		z->neg = !z->neg;
+}
+
+/*
+ * The common points of the circles of a1 and a2, two circles that differ:
+ * how many (0, 1 where they are tangent, 2), and for each, in the order
+ * right of the line from C1 to C2, then left, side[i][j] the sign of
+ * orient2d(A, B, X) times the side of M, A, M and B arc j's points: 1
+ * inside arc j, 0 at an end, -1 off it.
+ *
+ * Positions are taken from A1.  Times D_i, circle i's power is P_i(x) =
+ * D_i |x - A_i|^2 - (x - A_i) . U_i, and the common points lie on the
+ * radical line L(x) = D2 P1(x) - D1 P2(x) = n . x - k, n = 2 D1 D2 e +
+ * D1 U2 - D2 U1 (= 2 D1 D2 (C2 - C1)), k = D1 P2(A1), e = A2 - A1.  The
+ * line cuts circle 1 as its distance from C1, |g| / 2 |D1| |n| with g =
+ * 2 D1 k - n . U1, is below r1 = |U1| / 2 |D1|: the sign of |U1|^2 |n|^2 -
+ * g^2 tells 0, 1 or 2 points.  Each chord line AB of arc j not parallel to
+ * the radical line meets it at Y = A + tau (B - A), tau = -L(A) / n . b;
+ * the power there is tau (tau - 1) |b|^2, so the sign of the other
+ * circle's power at A times that at B, and the points lie against Y as
+ * the foot F of the centres does when Y is outside: along rot90(n), (F -
+ * Y) . rot90(n) = cross(n, C - Y), times 2 D n . b,
+ *
+ *	cross(n, U) (n . b) + 2 D L(A) cross(n, b),
+ *
+ * and orient2d(A, B, X) is the sign of X past Y times n . b.  A chord
+ * parallel to the radical line has both points on the side cross(n, b)
+ * L(A) says.  Degree 16 at most, in the differences of the input.
+ */
+int
+arc_circlesmeet(const struct arc *a1, const struct arc *a2, int side[2][2])
+{
+	const struct point *p[6] = { &a1->a, &a1->m, &a1->b, &a2->a, &a2->m,
+	    &a2->b };
+	struct bigarc z[2];
+	struct big ex, ey, e2, k, nx, ny, g, la[2], t, u;
+	int i, j, nroots, s, low = INT_MAX;
+
+	/*
+	 * Every sign below is of a homogeneous polynomial in differences of
+	 * coordinates, all multiples of 2^low: divided by it, the integers
+	 * are as short as the input's spread of digits, not BIGSHIFT longer.
+	 */
+	for (i = 0; i < 6; i++) {
+		if (p[i]->x != 0 && lowbit(p[i]->x) < low)
+			low = lowbit(p[i]->x);
+		if (p[i]->y != 0 && lowbit(p[i]->y) < low)
+			low = lowbit(p[i]->y);
+	}
+	low = low == INT_MAX ? 0 : low + BIGSHIFT;
+	bigarcshift(a1, &z[0], low);
+	bigarcshift(a2, &z[1], low);
+	big_diff(&ex, a2->a.x, a1->a.x);
+	big_diff(&ey, a2->a.y, a1->a.y);
+	big_shr(&ex, low);
+	big_shr(&ey, low);
+	big_dot(&e2, &ex, &ey, &ex, &ey, 0);
+	/* L(A1) = -D1 P2(A1) = -k, L(A2) = D2 P1(A2) */
+	big_mul(&k, &z[1].d, &e2);
+	big_dot(&t, &ex, &ey, &z[1].ux, &z[1].uy, 0);
+	big_addsub(&k, &k, &t, 1);
+	big_mul(&k, &k, &z[0].d);
+	la[0] = k;
+	big_neg(&la[0]);
+	big_mul(&la[1], &z[0].d, &e2);
+	big_dot(&t, &ex, &ey, &z[0].ux, &z[0].uy, 0);
+	big_addsub(&la[1], &la[1], &t, -1);
+	big_mul(&la[1], &la[1], &z[1].d);
+	big_mul(&g, &z[0].d, &z[1].d);
+	big_addsub(&g, &g, &g, 1);
+	big_mul(&nx, &g, &ex);
+	big_mul(&ny, &g, &ey);
+	big_mul(&t, &z[0].d, &z[1].ux);
+	big_addsub(&nx, &nx, &t, 1);
+	big_mul(&t, &z[1].d, &z[0].ux);
+	big_addsub(&nx, &nx, &t, -1);
+	big_mul(&t, &z[0].d, &z[1].uy);
+	big_addsub(&ny, &ny, &t, 1);
+	big_mul(&t, &z[1].d, &z[0].uy);
+	big_addsub(&ny, &ny, &t, -1);
+	if (big_sign(&nx) == 0 && big_sign(&ny) == 0)
+		return 0;	/* one centre, two radii */
+	big_mul(&g, &z[0].d, &k);
+	big_addsub(&g, &g, &g, 1);
+	big_dot(&t, &nx, &ny, &z[0].ux, &z[0].uy, 0);
+	big_addsub(&g, &g, &t, -1);
+	big_dot(&t, &z[0].ux, &z[0].uy, &z[0].ux, &z[0].uy, 0);
+	big_dot(&u, &nx, &ny, &nx, &ny, 0);
+	big_mul(&t, &t, &u);
+	big_mul(&u, &g, &g);
+	big_addsub(&t, &t, &u, -1);
+	if ((s = big_sign(&t)) < 0)
+		return 0;
+	nroots = s > 0 ? 2 : 1;
+	for (j = 0; j < 2; j++) {
+		const struct arc *a = j ? a2 : a1, *o = j ? a1 : a2;
+		struct big c, nb, w;
+		int kd, gs, ts = 0, r[2];
+
+		big_dot(&nb, &nx, &ny, &z[j].bx, &z[j].by, 0);
+		big_dot(&c, &nx, &ny, &z[j].bx, &z[j].by, 1);
+		if ((kd = big_sign(&nb)) == 0) {
+			s = big_sign(&c) * big_sign(&la[j]) * a->sd;
+			side[0][j] = side[1][j] = s;
+			continue;
+		}
+		gs = arc_power(o, a->a.x, a->a.y) * arc_power(o, a->b.x,
+		    a->b.y);
+		if (gs >= 0) {
+			big_dot(&w, &nx, &ny, &z[j].ux, &z[j].uy, 1);
+			big_mul(&w, &w, &nb);
+			big_mul(&t, &z[j].d, &la[j]);
+			big_addsub(&t, &t, &t, 1);
+			big_mul(&t, &t, &c);
+			big_addsub(&w, &w, &t, 1);
+			ts = big_sign(&w) * a->sd * kd;
+		}
+		arc_rootsat(gs, ts, r);
+		for (i = 0; i < 2; i++)
+			side[i][j] = r[i] * kd * a->sd;
+	}
+	/* the roots run along rot90(n), the sign of D1 D2 times C1 -> C2's */
+	if (a1->sd * a2->sd < 0)
+		for (j = 0; j < 2; j++) {
+			s = side[0][j];
+			side[0][j] = side[1][j];
+			side[1][j] = s;
+		}
+	return nroots;
 }

@@ -117,7 +117,11 @@ int	 arc_nearpower(const struct arc *, double, double, double, double,
  * where the line p->q meets the chord's line (not parallel to it),
  * arc_linepower that of dist(C, line pq)^2 - r^2, arc_tangentcross that of
  * cross(v - C2, v - C1), arc_powertoward that of the power at p + e(t -
- * p), e > 0 infinitesimal.
+ * p), e > 0 infinitesimal.  arc_circlesmeet gives how many common points
+ * two different circles have (0, 1 tangent, 2) and where each lies
+ * against the two arcs (1 inside, 0 an end, -1 off), the one right of C1
+ * -> C2 first; arc_rootsat where the roots of a quadratic lie against a
+ * point, from the sign there and the side of the roots' middle.
  */
 const char *arc_defect(struct point, struct point, struct point,
 	    const char *);
@@ -128,6 +132,8 @@ int	 arc_linepower(const struct arc *, struct point, struct point);
 int	 arc_tangentcross(const struct arc *, const struct arc *,
 	    struct point);
 int	 arc_powertoward(const struct arc *, struct point, struct point);
+int	 arc_circlesmeet(const struct arc *, const struct arc *, int[2][2]);
+void	 arc_rootsat(int, int, int[2]);
 
 /* The measures of an arc and its circular segment, in floating point. */
 struct arcmeasures {

@@ -229,3 +229,191 @@ body() {
 	body "$SAMPLES/semicircle-arc.qt" > want
 	diff -u want got
 }
+
+# Two arcs of two circles with no vertex on the other: tests/twocircles.py
+# finds the circles' common points apart from polyread (Fractions, exact
+# tangency) and where each lies against the two arcs.
+
+@test "two circles: a hole tangent to its shell from inside, at no vertex, is accepted" {
+	# the shell: radius 10 around 0 0; the hole: radius 5 around 5 0; they
+	# touch at 10 0, inside the shell's third arc and the hole's second
+	printf '6 8\narc -6 8\n-10 0\narc -6 -8\n6 -8\narc 8 -6\n\n8 4\narc 1 3\n2 -4\narc 9 -3\n' > t.xy
+	python3 "$TOP/tests/twocircles.py" 6 -8 8 -6 6 8  2 -4 9 -3 8 4 > where
+	printf 'tangent\n10.0 0.0 in in\n' | diff -u - where
+	# the hole's first arc does not reach 10 0
+	python3 "$TOP/tests/twocircles.py" 6 -8 8 -6 6 8  8 4 1 3 2 -4 > where
+	printf 'tangent\n10.0 0.0 in off\n' | diff -u - where
+	polyread t.xy > t.qt
+	awk '$1 == "ring" { print $2, $3 }' t.qt > got
+	printf '1 outer\n2 hole\n' | diff -u - got
+	# by hand: the region is pi (10^2 - 5^2) = 75 pi
+	area=$(qtsplit -l 3 t.qt | qtstats | awk '$1 == "polygon_area" { print $2 }')
+	python3 -c "import math, sys; a = float(sys.argv[1]); assert abs(a - 75 * math.pi) < 1e-12 * a, a" "$area"
+	# a second hole, radius 5 around -5 0, tangent to the shell at -10 0
+	# and to the first hole at 0 0: the three touches close a loop
+	python3 "$TOP/tests/twocircles.py" 8 4 1 3 2 -4  -8 -4 -1 -3 -2 4 > where
+	printf 'tangent\n0.0 0.0 in in\n' | diff -u - where
+	cp t.xy t2.xy
+	printf '\n-2 4\narc -9 3\n-8 -4\narc -1 -3\n' >> t2.xy
+	run -1 --separate-stderr polyread t2.xy
+	[[ "$stderr" == *"interior is disconnected: ring 2 touches the rings around it at "* ]]
+	# the point, in floating point, is the tangent point 10 0
+	p=${stderr##* around it at }
+	python3 -c "import sys; x, y = map(float, sys.argv[1:3]); assert abs(x - 10) < 1e-12 and abs(y) < 1e-12, (x, y)" ${p% and elsewhere*}
+}
+
+@test "two circles: circles tangent from outside touch, in xy and as a MULTISURFACE" {
+	# radius 5 around 0 0 and around 10 0, at no vertex of either
+	python3 "$TOP/tests/twocircles.py" 3 -4 4 -3 3 4  7 4 6 3 7 -4 > where
+	printf 'tangent\n5.0 0.0 in in\n' | diff -u - where
+	printf '3 4\narc -5 0\n3 -4\narc 4 -3\n\n7 -4\narc 15 0\n7 4\narc 6 3\n' > e.xy
+	polyread e.xy | awk '$1 == "ring" { print $2, $3 }' > got
+	printf '1 outer\n2 outer\n' | diff -u - got
+	echo 'MULTISURFACE(CURVEPOLYGON(CIRCULARSTRING(3 -4, 4 -3, 3 4, -5 0, 3 -4)), CURVEPOLYGON(CIRCULARSTRING(7 -4, 15 0, 7 4, 6 3, 7 -4)))' > e.wkt
+	polyread e.wkt | awk '$1 == "ring" { print $2, $3 }' > got
+	diff -u - got <<-EOT
+	1 outer
+	2 outer
+	EOT
+	# by hand: the two discs, 50 pi
+	area=$(polyread e.xy | qtsplit -l 3 | qtstats | awk '$1 == "polygon_area" { print $2 }')
+	python3 -c "import math, sys; a = float(sys.argv[1]); assert abs(a - 50 * math.pi) < 1e-12 * a, a" "$area"
+}
+
+@test "two circles: circles through each other's arc ends, off the arcs, are decided exactly" {
+	# radius 5 around 0 0 with its vertices 4 3 and 4 -3, which lie on the
+	# circle of radius 5 around 8 0; that circle's ring runs from 5 4 over
+	# 13 0 to 5 -4 and back along x = 5, off 4 3 and 4 -3
+	python3 "$TOP/tests/twocircles.py" 4 -3 5 0 4 3  5 4 13 0 5 -4 > where
+	diff -u - where <<-EOT
+	two
+	4 -3 end off
+	4 3 end off
+	EOT
+	printf '4 3\narc -5 0\n4 -3\narc 5 0\n\n5 4\narc 13 0\n5 -4\n' > d.xy
+	polyread d.xy > d.qt
+	awk '$1 == "ring" { print $2, $3 }' d.qt > got
+	printf '1 outer\n2 outer\n' | diff -u - got
+	# by hand: the disc, 25 pi, and the circle less its segment beyond
+	# x = 5, 3 from the centre: the half-angle acos(3/5)
+	area=$(qtsplit -l 3 d.qt | qtstats | awk '$1 == "polygon_area" { print $2 }')
+	python3 - "$area" <<-'PY'
+	import math, sys
+	a = float(sys.argv[1])
+	th = 2 * math.acos(3 / 5)
+	want = 25 * math.pi + 25 * math.pi - 25 * (th - math.sin(th)) / 2
+	assert abs(a - want) < 1e-12 * want, (a, want)
+	PY
+	# the second circle whole: its first arc from 5 4 over 3 0 to 5 -4
+	# holds 4 3 and 4 -3, so the rings cross where they touch
+	python3 "$TOP/tests/twocircles.py" 4 -3 5 0 4 3  5 4 3 0 5 -4 > where
+	diff -u - where <<-EOT
+	two
+	4 -3 end in
+	4 3 end in
+	EOT
+	printf '4 3\narc -5 0\n4 -3\narc 5 0\n\n5 4\narc 3 0\n5 -4\narc 13 0\n' > c.xy
+	run -1 --separate-stderr polyread c.xy
+	[[ "$stderr" == *"ring 2 crosses ring 1 where they touch"* ]]
+	# radius 5 around 0 0 and 8 0, with no vertex at the common points 4
+	# 3 and 4 -3: a crossing
+	python3 "$TOP/tests/twocircles.py" 0 -5 5 0 0 5  8 5 3 0 8 -5 > where
+	diff -u - where <<-EOT
+	two
+	4 -3 in in
+	4 3 in in
+	EOT
+	printf '0 5\narc -5 0\n0 -5\narc 5 0\n\n8 5\narc 3 0\n8 -5\narc 13 0\n' > x.xy
+	run -1 --separate-stderr polyread x.xy
+	[ "$stderr" = "polyread: x.xy:3: ring 1 edge 2 (line 3) crosses ring 2 edge 1 (line 6) at 4 -3" ]
+}
+
+@test "two circles: a hole an ulp inside its shell's tangent circle is accepted, an ulp outside it crosses" {
+	# the tangent hole above moved 2^-49 left and right: its circle keeps
+	# radius 5 (the points move together) and the centres lie 5 -+ 2^-49
+	# apart, inside or across the shell's circle of radius 10
+	for s in -1 1; do
+		python3 - $s > h$s.xy <<-'PY'
+		import sys
+		s = int(sys.argv[1]) * 2.0 ** -49
+		print("6 8\narc -6 8\n-10 0\narc -6 -8\n6 -8\narc 8 -6\n")
+		for x, y, arc in ((8, 4, ""), (1, 3, "arc "), (2, -4, ""), (9, -3, "arc ")):
+		    print("%s%r %r" % (arc, x + s, float(y)))
+		PY
+		read x1 y1 < <(sed -n 8p h$s.xy)
+		read _ x2 y2 < <(sed -n 11p h$s.xy)
+		read x3 y3 < <(sed -n 10p h$s.xy)
+		python3 "$TOP/tests/twocircles.py" 6 -8 8 -6 6 8 $x3 $y3 $x2 $y2 $x1 $y1 > where$s
+	done
+	echo apart | diff -u - where-1
+	polyread h-1.xy | awk '$1 == "ring" { print $2, $3 }' > got
+	printf '1 outer\n2 hole\n' | diff -u - got
+	# across: two points 1.88e-7 either side of 10 0, on both arcs
+	awk 'NR == 1 { print } NR > 1 { print $3, $4 }' where1 > got
+	printf 'two\nin in\nin in\n' | diff -u - got
+	run -1 --separate-stderr polyread h1.xy
+	[[ "$stderr" == "polyread: h1.xy:5: ring 1 edge 3 (line 5) crosses ring 2 edge 2 (line 10) at "* ]]
+	# the point, in floating point, near the first of the two
+	p=${stderr##* at }
+	read wx wy _ < <(sed -n 2p where1)
+	python3 -c "import sys; x, y, wx, wy = map(float, sys.argv[1:]); assert abs(x - wx) < 1e-12 and abs(y - wy) < 1e-7 and y < 0, (x, y)" $p $wx $wy
+}
+
+@test "two circles: a crossing an ulp before an arc's end is that arc's, an ulp past it is not" {
+	# the circle of radius 25 around 40 0 and the arc from 24 -7 over 25
+	# 0 to 20 15 -+ ulp, closed by its chord: the circles cross within
+	# ulps of 20 15, before the arc's end when 20 15 + ulp lies outside
+	# the first circle, past it when 20 15 - ulp lies inside
+	for y in 14.999999999999998 15.000000000000002; do
+		python3 "$TOP/tests/twocircles.py" 40 25 15 0 40 -25  24 -7 25 0 20 $y > w$y
+		printf '40 25\narc 15 0\n40 -25\narc 65 0\n\n24 -7\narc 25 0\n20 %s\n' $y > e$y.xy
+	done
+	[ "$(awk 'NR == 1 { print } NR > 1 { print $3, $4 }' w14.999999999999998 | tr '\n' ' ')" = "two in off in off " ]
+	[ "$(awk 'NR == 1 { print } NR > 1 { print $3, $4 }' w15.000000000000002 | tr '\n' ' ')" = "two in in in off " ]
+	# before: a hole in the circle, touching nothing
+	polyread e14.999999999999998.xy | awk '$1 == "ring" { print $2, $3 }' > got
+	printf '1 outer\n2 hole\n' | diff -u - got
+	# past: the arc, edge 1, crosses, before its chord does
+	run -1 --separate-stderr polyread e15.000000000000002.xy
+	[[ "$stderr" == "polyread: e15.000000000000002.xy:1: ring 1 edge 1 (line 1) crosses ring 2 edge 1 (line 6) at 20 15" ]]
+}
+
+@test "two circles: tangent circles near 2^169, and circles from 2^163 to 2^-300, fit the exact integers" {
+	# the tangent hole above scaled by 2^166, the largest power of two
+	# whose arcs polyread bounds
+	awk 'BEGIN { s = 2 ^ 166 } /^$/ { print; next }
+	    $1 == "arc" { printf "arc %.17g %.17g\n", $2 * s, $3 * s; next }
+	    { printf "%.17g %.17g\n", $1 * s, $2 * s }' > b.xy <<-EOT
+	6 8
+	arc -6 8
+	-10 0
+	arc -6 -8
+	6 -8
+	arc 8 -6
+
+	8 4
+	arc 1 3
+	2 -4
+	arc 9 -3
+	EOT
+	polyread b.xy | awk '$1 == "ring" { print $2, $3 }' > got
+	printf '1 outer\n2 hole\n' | diff -u - got
+	# scaled by 2^160, the hole's first arc through 2^-300 2^-300 for 0
+	# 0: its circle no longer tangent, the integers span 2^163 to 2^-300
+	# (232 limbs of 32 bits in the degree-16 products); the common points
+	# lie near 10 0, off that arc
+	python3 - > s.xy <<-'PY'
+	s, t = 2.0 ** 160, 2.0 ** -300
+	for x, y, arc in ((6, 8, ""), (-6, 8, "arc "), (-10, 0, ""),
+	    (-6, -8, "arc "), (6, -8, ""), (8, -6, "arc ")):
+	    print("%s%r %r" % (arc, x * s, y * s))
+	print("\n%r %r\narc %r %r\n%r %r\narc %r %r" % (8 * s, 4 * s, t, t,
+	    2 * s, -4 * s, 9 * s, -3 * s))
+	PY
+	python3 "$TOP/tests/twocircles.py" $(sed -n 5p s.xy) \
+	    $(sed -n 6p s.xy | tr -d arc) $(sed -n 1p s.xy) \
+	    $(sed -n '8,10p' s.xy | tr -d arc) | awk '{ print $NF }' > where
+	printf 'two\noff\noff\n' | diff -u - where
+	polyread s.xy | awk '$1 == "ring" { print $2, $3 }' > got
+	printf '1 outer\n2 hole\n' | diff -u - got
+}

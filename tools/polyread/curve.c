@@ -18,8 +18,9 @@
  * power of the other circle changes sign along the arc from V, which its
  * derivative at V and its sign at the arc's end tell.  Two arcs of two
  * circles with no known common point are told apart in floating point
- * with margins from lib/arc.c's enclosure of the centre; what the margins
- * cannot tell is refused.
+ * with margins from lib/arc.c's enclosure of the centre, and what the
+ * margins cannot tell, exactly by arc_circlesmeet: the common points on
+ * the radical line against each chord line, as for a straight edge.
  */
 #include <math.h>
 #include <stdint.h>
@@ -103,23 +104,6 @@ segseg(struct point a, struct point b, struct point c, struct point d,
 	return 1;
 }
 
-/*
- * Where the roots t1 <= t2 of g lie against a point s of the line, r[j]
- * < 0 before it, 0 at it, > 0 past it, from the sign gs of g at s and the
- * sign ts of the foot of the centre past s.
- */
-static void
-rootsat(int gs, int ts, int r[2])
-{
-	if (gs < 0)
-		r[0] = -1, r[1] = 1;
-	else if (gs == 0)
-		r[0] = ts > 0 ? 0 : ts < 0 ? -1 : 0,
-		r[1] = ts > 0 ? 1 : 0;
-	else
-		r[0] = r[1] = ts;
-}
-
 /* A root's point in floating point, for a message: j 0 the first. */
 static struct point
 rootpoint(const struct arc *a, struct point p, struct point q, int j)
@@ -166,10 +150,10 @@ segarc(struct point p, struct point q, const struct arc *a,
 		return 0;
 	else
 		twin = lp == 0;
-	rootsat(f0, ts0, r0);
-	rootsat(f1, ts1, r1);
+	arc_rootsat(f0, ts0, r0);
+	arc_rootsat(f1, ts1, r1);
 	if (kd != 0)
-		rootsat(gsx, tsx, rx);
+		arc_rootsat(gsx, tsx, rx);
 	for (j = 0; j < (twin ? 1 : 2); j++) {
 		int side = kd != 0 ? rx[j] * kd * a->sd : op * a->sd;
 
@@ -230,6 +214,25 @@ secondon(const struct arc *a, const struct arc *o, struct point v, int tc)
 }
 
 /*
+ * A common point of the circles of a1 and a2 in floating point, for a
+ * message: s -1 the one right of C1 -> C2, 1 the left one, 0 the foot of
+ * the centres on the radical line, d the centres' distance, u the foot's
+ * from C1.
+ */
+static struct point
+commonpoint(const struct arc *a1, const struct arc *a2, double d, double u,
+    double h2, int s)
+{
+	double dx = a2->cx - a1->cx, dy = a2->cy - a1->cy;
+	double h = s * sqrt(fmax(h2, 0));
+	struct point x;
+
+	x.x = a1->cx + (u * dx - h * dy) / d;
+	x.y = a1->cy + (u * dy + h * dx) / d;
+	return x;
+}
+
+/*
  * Two arcs of circles that the filter tells apart, or whose common points
  * it places clearly on or off each arc: 1 apart, 0 crossing at *p, -1 too
  * close to tell.
@@ -261,11 +264,9 @@ arcfilter(const struct arc *a1, const struct arc *a2, struct point *p)
 	err = 8 * (a1->ec + a2->ec + 0x1p-40 * (r1 + r2 + d)) *
 	    (1 + (r1 + r2) / sqrt(h2));
 	for (j = 0; j < 2; j++) {
-		struct point x;
+		struct point x = commonpoint(a1, a2, d, u, h2, j ? 1 : -1);
 		int on = 1;
 
-		x.x = a1->cx + (u * dx + (j ? 1 : -1) * sqrt(h2) * -dy) / d;
-		x.y = a1->cy + (u * dy + (j ? 1 : -1) * sqrt(h2) * dx) / d;
 		for (k = 0; k < 2; k++) {
 			const struct arc *a = k ? a2 : a1;
 			double bx = a->b.x - a->a.x, by = a->b.y - a->a.y;
@@ -282,6 +283,35 @@ arcfilter(const struct arc *a1, const struct arc *a2, struct point *p)
 		}
 	}
 	return ok ? 1 : -1;
+}
+
+/*
+ * Two arcs of two circles, exactly, where the filter cannot tell.  No end
+ * of one lies on the other (arcarc found those), so a common point on both
+ * is inside both: a crossing, or where the circles are tangent a touch.
+ */
+static int
+arcexact(const struct arc *a1, const struct arc *a2, struct meeting *m)
+{
+	struct arcmeasures g1, g2;
+	double dx = a2->cx - a1->cx, dy = a2->cy - a1->cy, d = hypot(dx, dy);
+	double u, h2;
+	int side[2][2], k = arc_circlesmeet(a1, a2, side), i, n = 0;
+
+	arc_measures(a1, &g1);
+	arc_measures(a2, &g2);
+	u = (d * d + g1.r * g1.r - g2.r * g2.r) / (2 * d);
+	h2 = g1.r * g1.r - u * u;
+	for (i = 0; i < k; i++) {
+		if (side[i][0] < 0 || side[i][1] < 0)
+			continue;
+		m[n].kind = k == 2 && side[i][0] > 0 && side[i][1] > 0 ?
+		    CROSS : TOUCH;
+		m[n].p = !(d > 0) ? a1->m : commonpoint(a1, a2, d, u, h2,
+		    k == 1 ? 0 : i ? 1 : -1);
+		n++;
+	}
+	return n;
 }
 
 static int
@@ -348,7 +378,7 @@ arcarc(const struct cedge *e, const struct cedge *f, struct meeting *m)
 		return n;
 	}
 	if ((rc = arcfilter(a1, a2, &v)) < 0)
-		edgefail(e, f, "comes too close to tell whether it meets", v);
+		return arcexact(a1, a2, m);
 	if (rc == 0) {
 		m[0].kind = CROSS;
 		m[0].p = v;
