@@ -417,3 +417,15 @@ body() {
 	polyread s.xy | awk '$1 == "ring" { print $2, $3 }' > got
 	printf '1 outer\n2 hole\n' | diff -u - got
 }
+
+@test "a clockwise ring with an arc is reversed with its arc on the same edge" {
+	# The square 0 0 / 0 2 / 2 2 / 2 0 runs clockwise, its east side the
+	# half circle through (3,1), centre (2,1), radius 1: reversed, the arc
+	# stays between (2,0) and (2,2), and the area is 4 + pi/2.
+	printf '0 0\n0 2\n2 2\narc 3 1\n2 0\n' | polyread > ring.qt
+	awk '$1 == "v" || $1 == "a"' ring.qt | tr '\n' ' ' > recs
+	grep -q 'v 2 0 a 3 1 v 2 2 \|^a 3 1 v 2 2 .* v 2 0 $' recs
+	area=$(qtstats ring.qt | awk '$1 == "polygon_area" { print $2 }')
+	awk -v a="$area" 'BEGIN { d = a - (4 + atan2(0, -1) / 2)
+	    exit !(d < 1e-12 && d > -1e-12) }'
+}
