@@ -74,11 +74,13 @@ readall(struct src *s, const char *path)
 	    st.st_size > 0 && (uintmax_t)st.st_size < SIZE_MAX / 2)
 		cap = (size_t)st.st_size + 2;
 	s->buf = xmalloc(cap);
+	hugepages(s->buf, cap);	/* read into once: 2 MB faults, not 4 KB */
 	s->len = 0;
 	for (;;) {
 		if (cap - s->len - 1 == 0) {
 			cap *= 2;
 			s->buf = xreallocarray(s->buf, cap, 1);
+			hugepages(s->buf, cap);
 		}
 		n = cap - s->len - 1;
 		if ((n = fread(s->buf + s->len, 1, n < LINEMAX ? n : LINEMAX,
