@@ -1105,7 +1105,6 @@ static void
 bfitboundary(void)
 {
 	boundarysides(addringseg);
-	free(ringsides.slot);
 }
 
 /*
@@ -1145,6 +1144,14 @@ addbends(uint32_t a, uint32_t b, uint32_t ring)
 {
 	addbend(a, b, ring, 1);
 	addbend(b, a, ring, 0);
+}
+
+/* One walk for both, when no element changes between the check and -f. */
+static void
+addbendsegs(uint32_t a, uint32_t b, uint32_t ring)
+{
+	addbends(a, b, ring);
+	addringseg(a, b, ring);
 }
 
 static int
@@ -1210,12 +1217,12 @@ ringsfail(uint32_t v, uint32_t r, const char *what, uint32_t r2)
 }
 
 static void
-checkboundary(void)
+checkboundary(int keepsegs)
 {
 	size_t i, j, k, g, z;
 
 	nbends = 0;
-	boundarysides(addbends);
+	boundarysides(keepsegs ? addbendsegs : addbends);
 	qsort(bends, nbends, sizeof(*bends), cmpbend);
 	for (i = 0; i < nbends; i = g) {
 		uint32_t v = bends[i].v;
@@ -1802,13 +1809,16 @@ bfitmesh(void)
 		meshbfit(i);
 	}
 	elstart[nleaves] = nelems;
-	checkboundary();
+	/* -t changes the elements: their boundary is walked again after */
+	checkboundary(format != QTREE && !(tfrac > 0));
 	if (tfrac > 0)
 		jointiny();
 	ear_free(ear);
 	cut_free(cutter);
-	if (format != QTREE)
+	if (format != QTREE && tfrac > 0)
 		bfitboundary();
+	free(ringsides.slot);
+	ringsides.slot = NULL;
 }
 
 /* The number of leaf i's elements. */
