@@ -260,11 +260,41 @@ deep() {
 	row star "$1" "$rlevel" subtree $((rec - nocell)) - "$mem"
 }
 
-# reader STAGE COMMAND N LEVEL RECORDS: time COMMAND, a reader of the
-# output of qtsplit -l LEVEL on the star of N vertices, as row STAGE.
-reader() {
-	t=$(timeit "$runs" "$2")
-	row star "$3" "$4" "$1" "$5" "$t" -
+# readers LEVEL RECORDS STAGE COMMAND [STAGE COMMAND ...]: the readers of
+# the output of qtsplit -l LEVEL on the star of 10^3 vertices, and the
+# yardsticks they are held to, timed in turns: one run of each a round,
+# after a round not counted, and a row for each with its median of $runs.
+# A slow spell of the machine then falls on all of them alike, where
+# timing each command's runs together left it on one (their ratios moved
+# from 0.6 to 1.1 between two runs an hour apart).
+readers() {
+	level=$1 records=$2
+	shift 2
+	rm -f "$tmp"/turn.*
+	round=0
+	while [ $round -le "$runs" ]; do
+		stage=
+		for arg in "$@"; do
+			if [ -z "$stage" ]; then
+				stage=$arg
+				continue
+			fi
+			t=$(timeit 1 "$arg")
+			[ $round -eq 0 ] || echo "$t" >>"$tmp/turn.$stage"
+			stage=
+		done
+		round=$((round + 1))
+	done
+	stage=
+	for arg in "$@"; do
+		if [ -z "$stage" ]; then
+			stage=$arg
+			continue
+		fi
+		row star 1000 "$level" "$stage" "$records" \
+		    "$(median <"$tmp/turn.$stage")" -
+		stage=
+	done
 }
 
 # catmerge LEVEL: qtcat merging two shards of the big stream, the root's
@@ -370,23 +400,21 @@ big=$(awk '$1 == "star" && $2 == 1000 && $3 <= 16 { l = $3; r = $4 }
 if [ -n "$big" ]; then
 	set -- $big
 	./qtsplit -l "$1" "$tmp/star-1000.qt" >"$tmp/big.qt"
+	# cat | wc -l on the mesh qtleaves -n writes, 1.2 times the tree's
+	# bytes and 1.8 times its lines, is what a pipe costs to carry it;
+	# its records column is still the tree's.
+	./qtleaves -n "$tmp/big.qt" >"$tmp/mesh.qt" ||
+		die "qtleaves -n failed on the star"
 	# Each through sh -c, as cat | wc -l must be, so that the ratios
 	# below compare like with like.
-	for tool in qtleaves qtstats qt2svg; do
-		[ -x "./$tool" ] || continue
-		reader "$tool" "./$tool $tmp/big.qt >/dev/null" 1000 "$1" "$2"
-	done
-	[ -x ./qtleaves ] && reader qtleaves-n \
-	    "./qtleaves -n $tmp/big.qt >/dev/null" 1000 "$1" "$2"
-	reader cat-wc "cat $tmp/big.qt | wc -l" 1000 "$1" "$2"
-	# What a pipe costs to carry the mesh qtleaves -n writes, 1.2 times
-	# the tree's bytes and 1.8 times its lines: its records column is
-	# still the tree's.
-	if [ -x ./qtleaves ]; then
-		./qtleaves -n "$tmp/big.qt" >"$tmp/mesh.qt"
-		reader cat-wc-mesh "cat $tmp/mesh.qt | wc -l" 1000 "$1" "$2"
-		rm -f "$tmp/mesh.qt"
-	fi
+	readers "$1" "$2" \
+	    qtleaves "./qtleaves $tmp/big.qt >/dev/null" \
+	    qtstats "./qtstats $tmp/big.qt >/dev/null" \
+	    qt2svg "./qt2svg $tmp/big.qt >/dev/null" \
+	    qtleaves-n "./qtleaves -n $tmp/big.qt >/dev/null" \
+	    cat-wc "cat $tmp/big.qt | wc -l" \
+	    cat-wc-mesh "cat $tmp/mesh.qt | wc -l"
+	rm -f "$tmp/mesh.qt"
 	catmerge "$1"
 	rm -f "$tmp/big.qt"
 fi
