@@ -266,7 +266,7 @@ deep() {
 # after a round not counted, and a row for each with its median of $runs.
 # A slow spell of the machine then falls on all of them alike, where
 # timing each command's runs together left it on one (their ratios moved
-# from 0.6 to 1.1 between two runs an hour apart).
+# from 0.6 to 1.1 between two runs 94 minutes apart).
 readers() {
 	level=$1 records=$2
 	shift 2
