@@ -270,31 +270,24 @@ deep() {
 readers() {
 	level=$1 records=$2
 	shift 2
+	: >"$tmp/turns"
+	while [ $# -ge 2 ]; do
+		printf '%s %s\n' "$1" "$2" >>"$tmp/turns"
+		shift 2
+	done
 	rm -f "$tmp"/turn.*
 	round=0
 	while [ $round -le "$runs" ]; do
-		stage=
-		for arg in "$@"; do
-			if [ -z "$stage" ]; then
-				stage=$arg
-				continue
-			fi
-			t=$(timeit 1 "$arg")
+		while read -r stage cmd; do
+			t=$(timeit 1 "$cmd" </dev/null)
 			[ $round -eq 0 ] || echo "$t" >>"$tmp/turn.$stage"
-			stage=
-		done
+		done <"$tmp/turns"
 		round=$((round + 1))
 	done
-	stage=
-	for arg in "$@"; do
-		if [ -z "$stage" ]; then
-			stage=$arg
-			continue
-		fi
+	while read -r stage cmd; do
 		row star 1000 "$level" "$stage" "$records" \
 		    "$(median <"$tmp/turn.$stage")" -
-		stage=
-	done
+	done <"$tmp/turns"
 }
 
 # catmerge LEVEL: qtcat merging two shards of the big stream, the root's

@@ -1800,6 +1800,7 @@ static void
 bfitmesh(void)
 {
 	size_t i;
+	int joining = tfrac > 0;
 
 	ear = ear_new();
 	bfitloops();
@@ -1810,15 +1811,14 @@ bfitmesh(void)
 	}
 	elstart[nleaves] = nelems;
 	/* -t changes the elements: their boundary is walked again after */
-	checkboundary(format != QTREE && !(tfrac > 0));
-	if (tfrac > 0)
+	checkboundary(format != QTREE && !joining);
+	if (joining)
 		jointiny();
 	ear_free(ear);
 	cut_free(cutter);
-	if (format != QTREE && tfrac > 0)
+	if (format != QTREE && joining)
 		bfitboundary();
 	free(ringsides.slot);
-	ringsides.slot = NULL;
 }
 
 /* The number of leaf i's elements. */
