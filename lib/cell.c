@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "qtree.h"
@@ -268,19 +269,56 @@ cellcmp(const struct cell *a, const struct cell *b)
 	return ay < by ? -1 : 1;
 }
 
-void
-celltext_init(struct celltext *t, const struct universe *u)
+static struct celltext *celltexts;	/* the caches in use */
+
+static int
+sameuniverse(const struct universe *a, const struct universe *b)
 {
-	struct coordtext *k = &t->coord[0][0][0];
+	/* bit for bit: 0 and -0 are printed differently */
+	return memcmp(&a->x0, &b->x0, sizeof(a->x0)) == 0 &&
+	    memcmp(&a->y0, &b->y0, sizeof(a->y0)) == 0 &&
+	    memcmp(&a->size, &b->size, sizeof(a->size)) == 0;
+}
+
+/* The cache of universe u's texts, shared with its other users. */
+struct celltext *
+celltext_open(const struct universe *u)
+{
+	struct celltext *t;
+	struct coordtext *k;
 	size_t i;
 
+	for (t = celltexts; t != NULL; t = t->next)
+		if (sameuniverse(&t->u, u)) {
+			t->users++;
+			return t;
+		}
+	t = xmalloc(sizeof(*t));
+	t->next = celltexts;
+	celltexts = t;
+	t->users = 1;
 	t->u = *u;
+	k = &t->coord[0][0][0];
 	for (i = 0; i <= QT_MAXLEVEL; i++) {
 		t->size[i] = ldexp(u->size, -(int)i);
 		t->sizetext[i].i = UINT64_MAX;
 	}
 	for (i = 0; i < sizeof(t->coord) / sizeof(*k); i++)
 		k[i].i = UINT64_MAX;
+	return t;
+}
+
+void
+celltext_close(struct celltext *t)
+{
+	struct celltext **p;
+
+	if (t == NULL || --t->users > 0)
+		return;
+	for (p = &celltexts; *p != t; p = &(*p)->next)
+		;
+	*p = t->next;
+	free(t);
 }
 
 const struct coordtext *

@@ -48,7 +48,10 @@ void	 two_product(double, double, double *, double *);
  * print them, kept per level and axis for the last few columns: in
  * preorder, neighbours share columns and rows, and children their
  * parent's, so few are ever formatted twice.  The reader compares fields
- * with them, the writer copies them.  Sixteen columns a level and axis:
+ * with them, the writer copies them.  Readers and writers of one universe
+ * share one cache: a mesh's vertices are its cells' corners, and the text
+ * a writer formats for a vertex is what the reader then finds for the next
+ * cell in that column.  Sixteen columns a level and axis:
  * in Z order a level's cells come back to a column after blocks of
  * columns to its right, and with eight the cells of a level-16 tree along
  * a curve formatted twice as many coordinates; a level has one size.
@@ -64,13 +67,16 @@ struct coordtext {
 };
 
 struct celltext {
+	struct celltext	*next;		/* the caches in use */
+	int		 users;
 	struct universe	 u;
 	double		 size[QT_MAXLEVEL + 1];
 	struct coordtext sizetext[QT_MAXLEVEL + 1];
 	struct coordtext coord[QT_MAXLEVEL + 1][2][NCOORD];
 };
 
-void	 celltext_init(struct celltext *, const struct universe *);
+struct celltext *celltext_open(const struct universe *);
+void	 celltext_close(struct celltext *);
 const struct coordtext *celltext_miss(struct celltext *, int, int,
 	    uint64_t);
 

@@ -366,6 +366,7 @@ void	 qt_ring(const struct ring *);
 void	 qt_cell(const struct cell *, unsigned long long);
 void	 qt_cellfrac(const struct cell *, unsigned long long, double);
 void	 qt_gridvertex(unsigned long long, int, uint64_t, uint64_t);
+void	 qt_cornervertex(unsigned long long, int, uint64_t, uint64_t);
 void	 qt_vertex(unsigned long long, double, double);
 void	 qt_elem(unsigned long long, const char *, size_t,
 	    const unsigned long long *);

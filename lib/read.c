@@ -52,7 +52,7 @@ struct qtreader {
 	struct universe	 u;
 	int		 ulevels;	/* the universe's deepest level */
 	int		 level;		/* the level record's */
-	struct celltext	 text;
+	struct celltext	*text;	/* shared with the writer */
 	char		 tail[192];	/* a cell's fields after its level */
 	/* the last cell: its path, NUL-terminated, and its prefixes' cells */
 	char		 path[QT_MAXLEVEL + 1];
@@ -115,6 +115,7 @@ qt_close(struct qtreader *r)
 	free(r->ring.mid);
 	free(r->ringtext.s);
 	free(r->type);
+	celltext_close(r->text);
 	free(r);
 }
 
@@ -238,7 +239,7 @@ static int
 coordfield(struct qtreader *r, const char *text, int level, int axis,
     uint64_t i, double *out)
 {
-	const struct coordtext *k = celltext(&r->text, level, axis, i);
+	const struct coordtext *k = celltext(r->text, level, axis, i);
 
 	if (strcmp(text, k->text) == 0) {
 		*out = k->v;
@@ -359,7 +360,7 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 		qt_fail(r, "cell %s is at column %llu row %llu, not %s %s",
 		    c->path, (unsigned long long)ix, (unsigned long long)iy,
 		    r->field[3], r->field[4]);
-	size = r->text.size[level];
+	size = r->text->size[level];
 	x = r->u.x0 + (double)ix * size;
 	y = r->u.y0 + (double)iy * size;
 	if (!coordfield(r, r->field[5], level, 0, ix, &c->x) ||
@@ -497,9 +498,9 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line,
 	if ((level = fastpath(r, &p, limit, &ix, &iy, &common)) < 0 ||
 	    level > r->ulevels)
 		return 0;
-	kx = celltext(&r->text, level, 0, ix);
-	ky = celltext(&r->text, level, 1, iy);
-	ks = celltext(&r->text, level, 2, 0);
+	kx = celltext(r->text, level, 0, ix);
+	ky = celltext(r->text, level, 1, iy);
+	ks = celltext(r->text, level, 2, 0);
 	if ((p = fastlevel(p, level)) == NULL)
 		return 0;
 	/* the rest as the writers would put it, compared at once */
@@ -571,7 +572,7 @@ universerec(struct qtreader *r, struct qtrec *rec)
 	r->ulevels = univdeepest(&rec->u, NULL, 0);
 	r->u = rec->u;
 	r->haveuniverse = 1;
-	celltext_init(&r->text, &r->u);
+	r->text = celltext_open(&r->u);
 }
 
 static void

@@ -53,7 +53,7 @@ static struct {
 	size_t		 len;
 	unsigned long long written;	/* records, for the end record */
 	unsigned long long flushed;	/* bytes, for progress reports */
-	struct celltext	 cell;
+	struct celltext	*cell;	/* shared with the readers */
 	struct gridtext	 grid[2][NTEXT];
 	struct numtext	 cellid, vertexid, elemid, newvertex;
 	struct vtext	 vtext[NVTEXT];
@@ -193,7 +193,8 @@ qt_setuniverse(const struct universe *u)
 {
 	int a, i;
 
-	celltext_init(&w.cell, u);
+	celltext_close(w.cell);
+	w.cell = celltext_open(u);
 	for (a = 0; a < 2; a++)
 		for (i = 0; i < NTEXT; i++)
 			w.grid[a][i].key = UINT64_MAX;
@@ -254,9 +255,9 @@ cellfields(const struct cell *c, unsigned long long id)
 		memcpy(p, c->text, c->textlen);
 		p += c->textlen;
 	} else {
-		kx = celltext(&w.cell, c->level, 0, c->ix);
-		ky = celltext(&w.cell, c->level, 1, c->iy);
-		ks = celltext(&w.cell, c->level, 2, 0);
+		kx = celltext(w.cell, c->level, 0, c->ix);
+		ky = celltext(w.cell, c->level, 1, c->iy);
+		ks = celltext(w.cell, c->level, 2, 0);
 		memcpy(p, c->class ? "leaf " : "node ", 5);
 		p += 5;
 		memcpy(p, c->path, c->level > 0 ? c->level : 1);
@@ -320,8 +321,8 @@ gridtext(struct gridtext *t, int axis, int level, uint64_t i, uint64_t key)
 {
 	t->key = key;
 	/* cellcoord's x0 + i h, its h computed once */
-	t->len = fmtreal(t->text, (axis ? w.cell.u.y0 : w.cell.u.x0) +
-	    (double)i * w.cell.size[level]) - t->text;
+	t->len = fmtreal(t->text, (axis ? w.cell->u.y0 : w.cell->u.x0) +
+	    (double)i * w.cell->size[level]) - t->text;
 }
 
 /* Writes the coordinate of grid line i at level on axis 0 (x) or 1 (y). */
@@ -350,6 +351,31 @@ qt_gridvertex(unsigned long long id, int level, uint64_t ix, uint64_t iy)
 	p = putgrid(p, 0, level, ix);
 	*p++ = ' ';
 	p = putgrid(p, 1, level, iy);
+	*p++ = '\n';
+	recorded(p);
+}
+
+/*
+ * Mesh vertex id at corner (ix, iy) of the cells at level: the same text
+ * as qt_gridvertex's for that point, from the cache of cell texts, where a
+ * reader of the universe finds it for the cells still to come in that
+ * column or row.
+ */
+void
+qt_cornervertex(unsigned long long id, int level, uint64_t ix, uint64_t iy)
+{
+	const struct coordtext *kx = celltext(w.cell, level, 0, ix);
+	const struct coordtext *ky = celltext(w.cell, level, 1, iy);
+	char *p = room(128);
+
+	memcpy(p, "vertex ", 7);
+	p = putnum(p + 7, &w.vertexid, id);
+	*p++ = ' ';
+	memcpy(p, kx->text, sizeof(kx->text));
+	p += kx->len;
+	*p++ = ' ';
+	memcpy(p, ky->text, sizeof(ky->text));
+	p += ky->len;
 	*p++ = '\n';
 	recorded(p);
 }

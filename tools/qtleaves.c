@@ -46,7 +46,7 @@ meshleaf(const struct cell *c, int kept, unsigned long long id)
 	uint64_t x = c->ix << shift, y = c->iy << shift;
 	uint64_t s = (uint64_t)1 << shift;
 	/* counter-clockwise from the lower left */
-	uint64_t px[4] = { x, x + s, x + s, x }, py[4] = { y, y, y + s, y + s };
+	static const int dx[4] = { 0, 1, 1, 0 }, dy[4] = { 0, 0, 1, 1 };
 	unsigned long long v[4];
 	static unsigned long long numbered;	/* vertices so far */
 
@@ -55,10 +55,11 @@ meshleaf(const struct cell *c, int kept, unsigned long long id)
 		return;
 	for (k = 0; k < 4; k++) {
 		/* numbered in order of first use: a new one is the next */
-		v[k] = corners_id(corners, px[k], py[k]);
+		v[k] = corners_id(corners, x + dx[k] * s, y + dy[k] * s);
 		if (v[k] > numbered) {
 			numbered = v[k];
-			qt_gridvertex(v[k], QT_GRID, px[k], py[k]);
+			qt_cornervertex(v[k], c->level, c->ix + dx[k],
+			    c->iy + dy[k]);
 		}
 	}
 	qt_elem(id, "quad", 4, v);
