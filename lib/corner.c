@@ -20,14 +20,15 @@
 
 struct live {
 	uint64_t	x, y;
-	uint32_t	id;	/* 0: a free slot */
+	uint32_t	id;
 };
 
 struct corners {
-	struct live	*live;	/* open addressing, at most half full */
-	size_t		 cap, n;
+	struct live	*live;	/* in order of first use, but for those dropped */
+	size_t		 n;
+	uint32_t	*slot;	/* 1 + the index in live, 0 free; half full at most */
+	size_t		 cap;	/* of slot, a power of 2; live has half */
 	int		 shift;		/* 64 - log2 cap, for slotof */
-	struct live	*spare;	/* empty, as large: the next table */
 	uint64_t	 atx, aty;	/* the lower left of the current cell */
 	int		 keep;		/* whether pt is kept */
 	uint64_t	(*pt)[2];	/* grid point of vertex i + 1 */
@@ -36,17 +37,16 @@ struct corners {
 
 /*
  * Is (ax, ay) before (bx, by) in Z order, y the higher bit of a digit?
- * cellcmp at one level, written out: it runs for every live point at
- * every prune, and the call costs 3 % of qtleaves -n.
+ * cellcmp at one level, written out, and without branches: it runs for
+ * every live point at every rebuild, on points in no order.
  */
 static int
 zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
 {
 	uint64_t dx = ax ^ bx, dy = ay ^ by;
+	int xhigher = (dy < dx) & (dy < (dx ^ dy));
 
-	if (dy < dx && dy < (dx ^ dy))	/* x's highest difference is higher */
-		return ax < bx;
-	return ay < by;
+	return xhigher ? ax < bx : ay < by;
 }
 
 /*
@@ -61,54 +61,51 @@ slotof(const struct corners *t, uint64_t x, uint64_t y)
 }
 
 static void
-put(struct corners *t, const struct live *v)
+setcap(struct corners *t, size_t cap)
+{
+	free(t->slot);
+	t->slot = xcalloc(cap, sizeof(*t->slot));
+	t->live = xreallocarray(t->live, cap / 2, sizeof(*t->live));
+	t->cap = cap;
+	for (t->shift = 64; cap > 1; cap /= 2)
+		t->shift--;
+}
+
+/* Indexes live point i in the slots; it is not there yet. */
+static void
+put(struct corners *t, size_t i)
 {
 	size_t k;
 
-	for (k = slotof(t, v->x, v->y); t->live[k].id != 0;
+	for (k = slotof(t, t->live[i].x, t->live[i].y); t->slot[k] != 0;
 	    k = (k + 1) & (t->cap - 1))
 		;
-	t->live[k] = *v;
-	t->n++;
+	t->slot[k] = (uint32_t)i + 1;
 }
 
 /*
- * The points not behind the sweep moved to the spare table, the old one
- * emptied slot by slot as they go and kept as the next spare.  Both grow
- * to eight times the points kept, never shrink: a rebuild reads every slot
- * and comes only after three times as many new points as it keeps.
+ * The points not behind the sweep kept, in their order, and indexed
+ * again.  The slots grow to eight times the points kept, never shrink:
+ * a rebuild comes only after three times as many new points as it keeps.
  */
 static void
 rebuild(struct corners *t)
 {
-	struct live *old = t->live;
-	size_t oldcap = t->cap, i, cap;
+	size_t i, n = 0, cap;
 
-	t->live = t->spare;
-	t->n = 0;
-	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0) {
-			if (!zbefore(old[i].x, old[i].y, t->atx, t->aty))
-				put(t, &old[i]);
-			old[i].id = 0;
-		}
-	t->spare = old;
-	if (8 * (t->n + 1) <= t->cap)
-		return;
-	for (cap = 2 * t->cap; 8 * (t->n + 1) > cap; cap *= 2)
+	for (i = 0; i < t->n; i++) {
+		t->live[n] = t->live[i];
+		n += !zbefore(t->live[i].x, t->live[i].y, t->atx, t->aty);
+	}
+	t->n = n;
+	for (cap = t->cap; 8 * (n + 1) > cap; cap *= 2)
 		;
-	old = t->live;
-	free(t->spare);
-	t->spare = xcalloc(cap, sizeof(*t->spare));
-	t->live = xcalloc(cap, sizeof(*t->live));
-	t->cap = cap;
-	for (t->shift = 64; cap > 1; cap /= 2)
-		t->shift--;
-	t->n = 0;
-	for (i = 0; i < oldcap; i++)
-		if (old[i].id != 0)
-			put(t, &old[i]);
-	free(old);
+	if (cap > t->cap)
+		setcap(t, cap);
+	else
+		memset(t->slot, 0, t->cap * sizeof(*t->slot));
+	for (i = 0; i < n; i++)
+		put(t, i);
 }
 
 /*
@@ -123,10 +120,7 @@ corners_new(int keeppoints)
 
 	memset(t, 0, sizeof(*t));
 	t->keep = keeppoints;
-	t->cap = 1024;
-	t->shift = 64 - 10;
-	t->live = xcalloc(t->cap, sizeof(*t->live));
-	t->spare = xcalloc(t->cap, sizeof(*t->spare));
+	setcap(t, 1024);
 	return t;
 }
 
@@ -135,7 +129,7 @@ corners_free(struct corners *t)
 {
 	if (t != NULL) {
 		free(t->live);
-		free(t->spare);
+		free(t->slot);
 		free(t->pt);
 	}
 	free(t);
@@ -153,9 +147,11 @@ corners_at(struct corners *t, uint64_t x, uint64_t y)
 static NOINLINE uint32_t
 newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y)
 {
+	struct live *v;
+
 	if (2 * (t->n + 1) > t->cap) {
 		rebuild(t);
-		for (k = slotof(t, x, y); t->live[k].id != 0;
+		for (k = slotof(t, x, y); t->slot[k] != 0;
 		    k = (k + 1) & (t->cap - 1))
 			;
 	}
@@ -169,11 +165,26 @@ newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y)
 		t->pt[t->npt][0] = x;
 		t->pt[t->npt][1] = y;
 	}
-	t->live[k].x = x;
-	t->live[k].y = y;
-	t->live[k].id = ++t->npt;
-	t->n++;
-	return t->live[k].id;
+	v = &t->live[t->n];
+	v->x = x;
+	v->y = y;
+	v->id = ++t->npt;
+	t->slot[k] = (uint32_t)++t->n;
+	return v->id;
+}
+
+/* The slot of the point at (x, y), or the free slot where it would go. */
+static size_t
+lookup(const struct corners *t, uint64_t x, uint64_t y)
+{
+	size_t k;
+	uint32_t j;
+
+	for (k = slotof(t, x, y); (j = t->slot[k]) != 0;
+	    k = (k + 1) & (t->cap - 1))
+		if (t->live[j - 1].x == x && t->live[j - 1].y == y)
+			break;
+	return k;
 }
 
 /*
@@ -184,26 +195,19 @@ newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y)
 uint32_t
 corners_id(struct corners *t, uint64_t x, uint64_t y)
 {
-	size_t k;
+	size_t k = lookup(t, x, y);
 
-	for (k = slotof(t, x, y); t->live[k].id != 0;
-	    k = (k + 1) & (t->cap - 1))
-		if (t->live[k].x == x && t->live[k].y == y)
-			return t->live[k].id;
-	return newpoint(t, k, x, y);
+	return t->slot[k] != 0 ? t->live[t->slot[k] - 1].id :
+	    newpoint(t, k, x, y);
 }
 
 /* The number of the vertex at (x, y) if it has one and is live, else 0. */
 uint32_t
 corners_find(const struct corners *t, uint64_t x, uint64_t y)
 {
-	size_t k;
+	size_t k = lookup(t, x, y);
 
-	for (k = slotof(t, x, y); t->live[k].id != 0;
-	    k = (k + 1) & (t->cap - 1))
-		if (t->live[k].x == x && t->live[k].y == y)
-			return t->live[k].id;
-	return 0;
+	return t->slot[k] != 0 ? t->live[t->slot[k] - 1].id : 0;
 }
 
 size_t
