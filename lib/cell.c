@@ -280,12 +280,13 @@ sameuniverse(const struct universe *a, const struct universe *b)
 	    memcmp(&a->size, &b->size, sizeof(a->size)) == 0;
 }
 
+static const struct levelcoords nocoords;	/* every key 0: empty */
+
 /* The cache of universe u's texts, shared with its other users. */
 struct celltext *
 celltext_open(const struct universe *u)
 {
 	struct celltext *t;
-	struct coordtext *k;
 	size_t i;
 
 	for (t = celltexts; t != NULL; t = t->next)
@@ -293,18 +294,15 @@ celltext_open(const struct universe *u)
 			t->users++;
 			return t;
 		}
-	t = xmalloc(sizeof(*t));
+	t = xcalloc(1, sizeof(*t));
 	t->next = celltexts;
 	celltexts = t;
 	t->users = 1;
 	t->u = *u;
-	k = &t->coord[0][0][0];
 	for (i = 0; i <= QT_MAXLEVEL; i++) {
 		t->size[i] = ldexp(u->size, -(int)i);
-		t->sizetext[i].i = UINT64_MAX;
+		t->coord[i] = (struct levelcoords *)&nocoords;
 	}
-	for (i = 0; i < sizeof(t->coord) / sizeof(*k); i++)
-		k[i].i = UINT64_MAX;
 	return t;
 }
 
@@ -312,36 +310,43 @@ void
 celltext_close(struct celltext *t)
 {
 	struct celltext **p;
+	size_t i;
 
 	if (t == NULL || --t->users > 0)
 		return;
 	for (p = &celltexts; *p != t; p = &(*p)->next)
 		;
 	*p = t->next;
+	for (i = 0; i <= QT_MAXLEVEL; i++)
+		if (t->coord[i] != &nocoords)
+			free(t->coord[i]);
 	free(t);
 }
 
 const struct coordtext *
 celltext_miss(struct celltext *t, int level, int axis, uint64_t i)
 {
-	struct coordtext *k = axis == 2 ? &t->sizetext[level] :
-	    &t->coord[level][axis][i % NCOORD];
+	struct coordtext *k;
 	const struct coordtext *up, *prev;
 
-	k->i = i;
+	if (axis < 2 && t->coord[level] == &nocoords)
+		t->coord[level] = xcalloc(1, sizeof(*t->coord[level]));
+	k = axis == 2 ? &t->sizetext[level] :
+	    &t->coord[level]->c[axis][i % NCOORD];
+	k->key = i + 1;
 	k->v = axis == 2 ? t->size[level] :
 	    (axis ? t->u.y0 : t->u.x0) + (double)i * t->size[level];
 	/* column 2j at this level is column j a level up, bit for bit */
 	up = level > 0 && axis < 2 && !(i & 1) ?
-	    &t->coord[level - 1][axis][(i >> 1) % NCOORD] : NULL;
-	if (up != NULL && up->i == i >> 1) {
+	    &t->coord[level - 1]->c[axis][(i >> 1) % NCOORD] : NULL;
+	if (up != NULL && up->key == (i >> 1) + 1) {
 		memcpy(k->text, up->text, sizeof(k->text));
 		k->len = up->len;
 	} else
 		k->len = fmtreal(k->text, k->v) - k->text;
 	/* 2j + 1 is 2j, whose last digit is even, with that digit plus one */
-	prev = i & 1 ? &t->coord[level][axis][(i - 1) % NCOORD] : NULL;
-	if (prev != NULL && prev->i == i - 1) {
+	prev = i & 1 ? &t->coord[level]->c[axis][(i - 1) % NCOORD] : NULL;
+	if (prev != NULL && prev->key == i) {
 		memcpy(k->itext, prev->itext, sizeof(k->itext));
 		k->ilen = prev->ilen;
 		k->itext[k->ilen - 1]++;

@@ -59,20 +59,29 @@ void	 two_product(double, double, double *, double *);
 #define NCOORD	16	/* columns kept per level and axis */
 
 struct coordtext {
-	uint64_t	 i;		/* UINT64_MAX when empty */
+	uint64_t	 key;		/* i + 1, 0 when empty */
 	double		 v;		/* x0 + i * h, or h for the size */
 	size_t		 len, ilen;
 	char		 text[32];	/* of v, copied whole */
 	char		 itext[24];	/* of i, copied whole */
 };
 
+struct levelcoords {
+	struct coordtext c[2][NCOORD];	/* by axis and column */
+};
+
+/*
+ * A level's columns and rows are allocated at its first miss; until then
+ * it has the shared empty set, where nothing is found and nothing is
+ * written.  A small run touches a few pages, not the 140 KB of every level.
+ */
 struct celltext {
 	struct celltext	*next;		/* the caches in use */
 	int		 users;
 	struct universe	 u;
 	double		 size[QT_MAXLEVEL + 1];
 	struct coordtext sizetext[QT_MAXLEVEL + 1];
-	struct coordtext coord[QT_MAXLEVEL + 1][2][NCOORD];
+	struct levelcoords *coord[QT_MAXLEVEL + 1];
 };
 
 struct celltext *celltext_open(const struct universe *);
@@ -85,9 +94,9 @@ static inline const struct coordtext *
 celltext(struct celltext *t, int level, int axis, uint64_t i)
 {
 	const struct coordtext *k = axis == 2 ? &t->sizetext[level] :
-	    &t->coord[level][axis][i % NCOORD];
+	    &t->coord[level]->c[axis][i % NCOORD];
 
-	return k->i == i ? k : celltext_miss(t, level, axis, i);
+	return k->key == i + 1 ? k : celltext_miss(t, level, axis, i);
 }
 
 /*

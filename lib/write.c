@@ -55,6 +55,7 @@ static struct {
 	unsigned long long flushed;	/* bytes, for progress reports */
 	struct celltext	*cell;	/* shared with the readers */
 	struct gridtext	 grid[2][NTEXT];
+	int		 gridset;	/* grid emptied for this universe */
 	struct numtext	 cellid, vertexid, elemid, newvertex;
 	struct vtext	 vtext[NVTEXT];
 } w;
@@ -191,13 +192,9 @@ qt_universe(const struct universe *u)
 void
 qt_setuniverse(const struct universe *u)
 {
-	int a, i;
-
 	celltext_close(w.cell);
 	w.cell = celltext_open(u);
-	for (a = 0; a < 2; a++)
-		for (i = 0; i < NTEXT; i++)
-			w.grid[a][i].key = UINT64_MAX;
+	w.gridset = 0;
 }
 
 void
@@ -331,7 +328,18 @@ putgrid(char *p, int axis, int level, uint64_t i)
 {
 	uint64_t key = i << 6 | (uint64_t)level;
 	struct gridtext *t;
+	int a, k;
 
+	/*
+	 * Emptied at the first vertex, not with the universe: a program
+	 * that writes none is spared touching 400 KB.
+	 */
+	if (!w.gridset) {
+		for (a = 0; a < 2; a++)
+			for (k = 0; k < NTEXT; k++)
+				w.grid[a][k].key = UINT64_MAX;
+		w.gridset = 1;
+	}
 	t = &w.grid[axis][(key * UINT64_C(0x9E3779B97F4A7C15)) >> 52];
 	if (t->key != key)
 		gridtext(t, axis, level, i, key);

@@ -339,6 +339,25 @@ ring 3 outer 4" ]
 ring 2 hole 4" ]
 }
 
+@test "a crossing is found among 100 vertices and among 1000, sorted two ways" {
+	# a regular n-gon with vertices n/2 and n/2 + 2 (from 0) swapped: edge
+	# n/2 (from line n/2) is now the chord from vertex n/2 - 1 to n/2 + 2,
+	# edge n/2 + 3 the chord from n/2 to n/2 + 3, whose ends interleave
+	# with its ends on the circle; every other pair of chords nests or
+	# shares an end.  Below 512 vertices the sweep's order is sorted by
+	# qsort alone, from 512 by radix first.
+	for n in 100 1000; do
+		awk -v n=$n 'BEGIN { for (i = 0; i < n; i++) {
+		    j = i == n / 2 ? n / 2 + 2 : i == n / 2 + 2 ? n / 2 : i
+		    a = 2 * 3.141592653589793 * j / n
+		    printf "%.10f %.10f\n", cos(a), sin(a) } }' > swap.xy
+		run -1 --separate-stderr polyread swap.xy
+		a=$((n / 2)) b=$((n / 2 + 3))
+		[[ "$stderr" == "polyread: swap.xy:$b: ring 1 edge $b (line $b) crosses ring 1 edge $a (line $a) at "* ]] ||
+		    [[ "$stderr" == "polyread: swap.xy:$a: ring 1 edge $a (line $a) crosses ring 1 edge $b (line $b) at "* ]]
+	done
+}
+
 @test "vertical edges may meet end to end, but not overlap" {
 	# squares corner to corner: x = 1 holds 0..1 of one and 1..2 of the other
 	printf '0 0\n1 0\n1 1\n0 1\n\n1 1\n2 1\n2 2\n1 2\n' > meet.xy

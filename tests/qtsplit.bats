@@ -421,3 +421,25 @@ colour red 1.50' > u.qt
 		[[ "$output" == "ok: "* ]]
 	done
 }
+
+@test "a small input touches few pages beyond the program's start" {
+	[ -z "${QTREE_SANITIZE:-}" ] || skip "the programs are built with sanitizers, whose shadow memory faults pages"
+	[ -x /usr/bin/time ] || skip "no GNU time (Debian package time) to count page faults"
+	# minor page faults of a run less those of the same program's -h,
+	# which starts it, prints its usage and exits: on this VM a fault
+	# costs about 30 microseconds, and tables filled at start-up (400 KB
+	# of vertex texts, 140 KB of cell texts, 48 KB of radix counts) made
+	# the amoeba's two programs take 150 and 190 more
+	faults() {
+		/usr/bin/time -f %R "$@" 2>&1 >/dev/null </dev/null | tail -n 1
+	}
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	start=$(faults polyread -h)
+	run=$(faults polyread "$SAMPLES/amoeba.brep")
+	echo "polyread: $start at start, $run in all"
+	[ $((run - start)) -lt 64 ]
+	start=$(faults qtsplit -h)
+	run=$(faults qtsplit -l 10 a.qt)
+	echo "qtsplit: $start at start, $run in all"
+	[ $((run - start)) -lt 64 ]
+}
