@@ -271,15 +271,6 @@ cellcmp(const struct cell *a, const struct cell *b)
 
 static struct celltext *celltexts;	/* the caches in use */
 
-static int
-sameuniverse(const struct universe *a, const struct universe *b)
-{
-	/* bit for bit: 0 and -0 are printed differently */
-	return memcmp(&a->x0, &b->x0, sizeof(a->x0)) == 0 &&
-	    memcmp(&a->y0, &b->y0, sizeof(a->y0)) == 0 &&
-	    memcmp(&a->size, &b->size, sizeof(a->size)) == 0;
-}
-
 static const struct levelcoords nocoords;	/* every key 0: empty */
 
 /* The cache of universe u's texts, shared with its other users. */
@@ -289,8 +280,9 @@ celltext_open(const struct universe *u)
 	struct celltext *t;
 	size_t i;
 
+	/* bit for bit, three doubles: 0 and -0 are printed differently */
 	for (t = celltexts; t != NULL; t = t->next)
-		if (sameuniverse(&t->u, u)) {
+		if (memcmp(&t->u, u, sizeof(*u)) == 0) {
 			t->users++;
 			return t;
 		}

@@ -71,16 +71,22 @@ setcap(struct corners *t, size_t cap)
 		t->shift--;
 }
 
+/* The free slot for (x, y), which is not in the table. */
+static size_t
+freeslot(const struct corners *t, uint64_t x, uint64_t y)
+{
+	size_t k;
+
+	for (k = slotof(t, x, y); t->slot[k] != 0; k = (k + 1) & (t->cap - 1))
+		;
+	return k;
+}
+
 /* Indexes live point i in the slots; it is not there yet. */
 static void
 put(struct corners *t, size_t i)
 {
-	size_t k;
-
-	for (k = slotof(t, t->live[i].x, t->live[i].y); t->slot[k] != 0;
-	    k = (k + 1) & (t->cap - 1))
-		;
-	t->slot[k] = (uint32_t)i + 1;
+	t->slot[freeslot(t, t->live[i].x, t->live[i].y)] = (uint32_t)i + 1;
 }
 
 /*
@@ -151,9 +157,7 @@ newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y)
 
 	if (2 * (t->n + 1) > t->cap) {
 		rebuild(t);
-		for (k = slotof(t, x, y); t->slot[k] != 0;
-		    k = (k + 1) & (t->cap - 1))
-			;
+		k = freeslot(t, x, y);
 	}
 	if (t->npt == UINT32_MAX)
 		die(1, "more than %lu vertices", (unsigned long)UINT32_MAX);

@@ -57,12 +57,13 @@ void	 two_product(double, double, double *, double *);
  * a curve formatted twice as many coordinates; a level has one size.
  */
 #define NCOORD	16	/* columns kept per level and axis */
+#define COORDTEXT 32	/* room for fmtreal's text, copied whole */
 
 struct coordtext {
 	uint64_t	 key;		/* i + 1, 0 when empty */
 	double		 v;		/* x0 + i * h, or h for the size */
 	size_t		 len, ilen;
-	char		 text[32];	/* of v, copied whole */
+	char		 text[COORDTEXT];	/* of v, copied whole */
 	char		 itext[24];	/* of i, copied whole */
 };
 

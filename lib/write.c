@@ -23,7 +23,7 @@
 struct gridtext {
 	uint64_t	key;	/* UINT64_MAX when empty */
 	size_t		len;
-	char		text[32];
+	char		text[COORDTEXT];
 };
 
 /*
@@ -322,12 +322,43 @@ gridtext(struct gridtext *t, int axis, int level, uint64_t i, uint64_t key)
 	    (double)i * w.cell->size[level]) - t->text;
 }
 
-/* Writes the coordinate of grid line i at level on axis 0 (x) or 1 (y). */
-static inline char *
-putgrid(char *p, int axis, int level, uint64_t i)
+/* The text of grid line i at level on axis 0 (x) or 1 (y). */
+static inline const struct gridtext *
+gridline(int axis, int level, uint64_t i)
 {
 	uint64_t key = i << 6 | (uint64_t)level;
 	struct gridtext *t;
+
+	t = &w.grid[axis][(key * UINT64_C(0x9E3779B97F4A7C15)) >> 52];
+	if (t->key != key)
+		gridtext(t, axis, level, i, key);
+	return t;
+}
+
+/* A vertex record; x and y are texts of COORDTEXT bytes, copied whole. */
+static inline void
+vertexrecord(unsigned long long id, const char *x, size_t xlen,
+    const char *y, size_t ylen)
+{
+	char *p = room(128);
+
+	memcpy(p, "vertex ", 7);
+	p = putnum(p + 7, &w.vertexid, id);
+	*p++ = ' ';
+	memcpy(p, x, COORDTEXT);
+	p += xlen;
+	*p++ = ' ';
+	memcpy(p, y, COORDTEXT);
+	p += ylen;
+	*p++ = '\n';
+	recorded(p);
+}
+
+/* Mesh vertex id at corner (ix, iy) of the grid at level. */
+void
+qt_gridvertex(unsigned long long id, int level, uint64_t ix, uint64_t iy)
+{
+	const struct gridtext *tx, *ty;
 	int a, k;
 
 	/*
@@ -340,27 +371,9 @@ putgrid(char *p, int axis, int level, uint64_t i)
 				w.grid[a][k].key = UINT64_MAX;
 		w.gridset = 1;
 	}
-	t = &w.grid[axis][(key * UINT64_C(0x9E3779B97F4A7C15)) >> 52];
-	if (t->key != key)
-		gridtext(t, axis, level, i, key);
-	memcpy(p, t->text, sizeof(t->text));
-	return p + t->len;
-}
-
-/* Mesh vertex id at corner (ix, iy) of the grid at level. */
-void
-qt_gridvertex(unsigned long long id, int level, uint64_t ix, uint64_t iy)
-{
-	char *p = room(128);
-
-	memcpy(p, "vertex ", 7);
-	p = putnum(p + 7, &w.vertexid, id);
-	*p++ = ' ';
-	p = putgrid(p, 0, level, ix);
-	*p++ = ' ';
-	p = putgrid(p, 1, level, iy);
-	*p++ = '\n';
-	recorded(p);
+	tx = gridline(0, level, ix);
+	ty = gridline(1, level, iy);
+	vertexrecord(id, tx->text, tx->len, ty->text, ty->len);
 }
 
 /*
@@ -374,18 +387,8 @@ qt_cornervertex(unsigned long long id, int level, uint64_t ix, uint64_t iy)
 {
 	const struct coordtext *kx = celltext(w.cell, level, 0, ix);
 	const struct coordtext *ky = celltext(w.cell, level, 1, iy);
-	char *p = room(128);
 
-	memcpy(p, "vertex ", 7);
-	p = putnum(p + 7, &w.vertexid, id);
-	*p++ = ' ';
-	memcpy(p, kx->text, sizeof(kx->text));
-	p += kx->len;
-	*p++ = ' ';
-	memcpy(p, ky->text, sizeof(ky->text));
-	p += ky->len;
-	*p++ = '\n';
-	recorded(p);
+	vertexrecord(id, kx->text, kx->len, ky->text, ky->len);
 }
 
 /* Mesh vertex id at any point, as the boundary-fitted mesh has them. */
