@@ -437,8 +437,10 @@ parsereal(const char *s, const char **end, double *out)
 }
 
 /*
- * Reads a decimal integer into *out; same conventions as parsereal.  No
- * digit count: v is checked at every digit, so any length is safe.
+ * Reads a decimal integer into *out; same conventions as parsereal: -2
+ * when it lies past long long, with *end after its last digit so that a
+ * caller can tell a big integer from a bad one.  No digit count: v is
+ * checked at every digit, so any length is safe.
  */
 int
 parselong(const char *s, const char **end, long long *out)
@@ -456,8 +458,12 @@ parselong(const char *s, const char **end, long long *out)
 
 		/* below LLONG_MAX / 10 no digit can overflow: skip the division */
 		if (v >= (unsigned long long)LLONG_MAX / 10 &&
-		    v > ((unsigned long long)LLONG_MAX - d) / 10)
+		    v > ((unsigned long long)LLONG_MAX - d) / 10) {
+			while (*p >= '0' && *p <= '9')
+				p++;
+			*end = p;
 			return -2;
+		}
 		v = v * 10 + d;
 	}
 	*end = p;

@@ -174,8 +174,12 @@ intfield(struct qtreader *r, const char *s, const char *what, long long lo,
 {
 	const char *end;
 	long long v;
+	int rc = parselong(s, &end, &v);
 
-	if (parselong(s, &end, &v) < 0 || *end != '\0')
+	/* past long long it is still an integer, only a bigger one */
+	if (rc == -2 && *end == '\0')
+		qt_fail(r, "%s out of range %lld to %lld: %s", what, lo, hi, s);
+	if (rc < 0 || *end != '\0')
 		qt_fail(r, "%s is not an integer: %s", what, s);
 	if (v < lo || v > hi)
 		qt_fail(r, "%s out of range %lld to %lld: %s", what, lo, hi, s);

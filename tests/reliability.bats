@@ -351,3 +351,29 @@ longrecord() {
 	[ "$status" -eq 1 ]
 	[ "$stderr" = "qtstats: stdin:$n: NUL byte in input" ]
 }
+
+# Element ids are long longs: a leaf's id read by the fast path (the
+# record spelled as the writers spell it) and by the long one (its x
+# spelled 4.0), and an elem record's, each at the largest id, one past it
+# (19 digits) and far past it (20 digits).
+@test "ids past long long are out of range in both paths, not taken nor called non-integers" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 2 | qtleaves -n > n.qt
+	grep -qx 'leaf 00 2 0 0 4 4 3.05 P 1' n.qt
+	max=9223372036854775807
+	for x in 4 4.0; do
+		sed "s/^leaf 00 2 0 0 4 4 3.05 P 1\$/leaf 00 2 0 0 $x 4 3.05 P $max/" \
+		    n.qt > ok.qt
+		run -0 qt2svg ok.qt
+		for id in 9223372036854775808 9999999999999999999 99999999999999999999; do
+			sed "s/^leaf 00 2 0 0 4 4 3.05 P 1\$/leaf 00 2 0 0 $x 4 3.05 P $id/" \
+			    n.qt > big.qt
+			run -1 --separate-stderr qt2svg big.qt
+			[ "$stderr" = "qt2svg: big.qt:50: element id out of range 1 to $max: $id" ]
+		done
+	done
+	for id in 9223372036854775808 99999999999999999999; do
+		sed "s/^elem 1 quad/elem $id quad/" n.qt > big.qt
+		run -1 --separate-stderr qtstats big.qt
+		[ "$stderr" = "qtstats: big.qt:55: element id out of range 1 to $max: $id" ]
+	done
+}
