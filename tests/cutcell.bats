@@ -292,3 +292,40 @@ for a in sys.argv[1:]:
 	# without -a the leaves pass as ever
 	run -0 qtleaves plate.qt
 }
+
+# Two triangles of one cell that meet at one point, the hole's vertex
+# (2, 2) where it touches the shell: a pinched piece of exactly six
+# points, cut in two.  The cell is [0, 4]^2; the shell's part in it is the
+# triangle (0.2, 0) (1.25, 0) (2, 2) below and (2, 2) (1.25, 4) (0.2, 4)
+# above, each of area 1.05 (base 1.05, height 2), so 2.1 of 16: 0.13125.
+@test "-p: a piece pinched at one point is two rings, none repeating a point" {
+	echo 'POLYGON((0.5 -2,2 2,0.5 6,-3 6,-3 -2,0.5 -2),(2 2,-1.15 -1.5,-1.15 5.5,2 2))' |
+	    polyread -u -4,-4,16 | qtsplit -l 2 > t.qt
+	qtleaves -a t.qt | python3 "$TOP/tests/cutcheck.py" > check
+	grep -qx '03 0.13125 ok' check
+	qtleaves -p -f wkt t.qt > p.tsv
+	run -0 awk -F '\t' '$1 == "03" { print $5, $6 }' p.tsv
+	[ "$output" = "MULTIPOLYGON (((2 2, 1.25 4, 0.20000000000000004 4, 2 2)),((0.20000000000000004 0, 1.25 0, 2 2, 0.20000000000000004 0))) 0.13125" ]
+	# every ring of every piece, here and on the samples: its points
+	# apart but for the closing one
+	for s in amoeba.brep apple.xy plane.wkt; do
+		polyread "$SAMPLES/$s" | qtsplit -l 5 | qtleaves -p -f wkt
+	done >> p.tsv
+	run -0 awk -F '\t' '{
+		s = $5
+		gsub(/^MULTIPOLYGON \(+|\)+$/, "", s)
+		n = split(s, ring, /\)+, *\(+/)
+		for (i = 1; i <= n; i++) {
+			k = split(ring[i], pt, /, */)
+			if (pt[1] != pt[k]) { print "open", $1; bad = 1 }
+			delete seen
+			for (j = 1; j < k; j++) {
+				if (pt[j] in seen) { print "repeats", $1, pt[j]; bad = 1 }
+				seen[pt[j]] = 1
+			}
+			rings++
+		}
+	} END { print rings; exit bad }' p.tsv
+	echo "$output"
+	[ "${lines[0]}" -gt 100 ]
+}
