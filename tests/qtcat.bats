@@ -149,6 +149,30 @@ whole() {
 	[ "$stderr" = "qtcat: s/22.qt:$n: cell 21 is missing: cell 22 comes after cell 2033 (s/20.qt:$m)" ]
 }
 
+# The first child of a node missing: cell 21 must not pass for the cell
+# after node 2.
+@test "a missing shard that is a node's first child is refused" {
+	d=$BATS_FILE_TMPDIR
+	mkdir s && cp $d/amoeba-S-2/*.qt s/ && rm s/20.qt
+	n=$(grep -n '^node 2 ' $d/amoeba-top-2.qt | cut -d: -f1)
+	m=$(grep -n '^node 21 ' s/21.qt | cut -d: -f1)
+	run -1 --separate-stderr qtcat $d/amoeba-top-2.qt s/*.qt
+	[ "$stderr" = "qtcat: s/21.qt:$m: cell 20 is missing: cell 21 comes after cell 2 ($d/amoeba-top-2.qt:$n)" ]
+}
+
+# The last child of a node that is not the last missing: node 1 must not
+# pass for the cell after 0233, the last cell of shard 02.
+@test "a missing shard that is the last child of a non-last node is refused" {
+	d=$BATS_FILE_TMPDIR
+	mkdir s && cp $d/amoeba-S-2/*.qt s/ && rm s/03.qt
+	n=$(grep -n '^node 1 ' $d/amoeba-top-2.qt | cut -d: -f1)
+	m=$(grep -n '^leaf 0233 ' s/02.qt | cut -d: -f1)
+	[ "$(grep -c '^leaf 0233\|^node 0233' s/02.qt)" -eq 1 ]
+	[ "$(awk '$1 == "node" || $1 == "leaf" { p = $2 } END { print p }' s/02.qt)" = 0233 ]
+	run -1 --separate-stderr qtcat $d/amoeba-top-2.qt s/*.qt
+	[ "$stderr" = "qtcat: $d/amoeba-top-2.qt:$n: cell 03 is missing: cell 1 comes after cell 0233 (s/02.qt:$m)" ]
+}
+
 @test "the last shard missing is refused at the last cell" {
 	d=$BATS_FILE_TMPDIR
 	n=$(grep -n '^leaf 23 ' $d/tri-S-1/2.qt | cut -d: -f1)
