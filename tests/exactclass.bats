@@ -121,3 +121,34 @@ sameasexact() {
 	0.1875,2.812500000000001 2.765625,0.23437499999999978 2.765625,2.8125
 	EOF
 }
+
+# Edges that end on a line between children and otherwise lie in one
+# child: the shortcut that gives such an edge to one child alone must not
+# take them (its box test is strict), or the parity along that line is
+# lost (an F leaf turns E) or a cell no edge enters is split.  Vertices on
+# the quarter grid of the universe [0, 4]^2 put them there at every level.
+@test "edges ending on the children's dividing lines: the exact tree, and no node split in vain" {
+	printf '3 2\n2 3.5\n1.25 2.25\n0.5 2.25\n1.25 0.75\n2 1\n2.5 1\n' > a.xy
+	printf '1.75 2.5\n0.5 2.75\n0.5 2\n1 1.75\n1.25 1.75\n1.75 0.5\n2.25 0.75\n' > b.xy
+	printf '3.5 2.5\n2.75 2.75\n1 1.5\n2.25 1.25\n' > c.xy
+	printf '2.75 3\n0.75 2.25\n0.5 1\n3 1.5\n' > d.xy
+	for p in a b c d; do
+		polyread -f xy -u 0,0,4 $p.xy > $p.qt
+		sameasexact $p.qt 3
+		# a node whose four children are leaves of one class, F or E,
+		# was split though no edge meets it
+		qtsplit -l 3 $p.qt | awk '
+		    $1 == "node" || $1 == "leaf" { path[n] = $2; kind[n] = $1; cls[n++] = $9 }
+		    END {
+			for (i = 0; i + 4 < n; i++)
+				if (kind[i] == "node" && kind[i+1] == "leaf" &&
+				    kind[i+2] == "leaf" && kind[i+3] == "leaf" &&
+				    kind[i+4] == "leaf" && cls[i+1] != "P" &&
+				    cls[i+1] == cls[i+2] && cls[i+2] == cls[i+3] &&
+				    cls[i+3] == cls[i+4]) {
+					print "node " path[i] " split in vain"; bad = 1
+				}
+			exit bad
+		    }'
+	done
+}
