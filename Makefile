@@ -44,8 +44,13 @@ qtleaves: tools/qtleaves.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtleaves.o lib/libqtree.a $(LDLIBS)
 qtstats: tools/qtstats.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o lib/libqtree.a $(LDLIBS)
-qt2svg: tools/qt2svg.o
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qt2svg.o lib/libqtree.a $(LDLIBS)
+# qt2svg too: main.c, out.c, window.c, leaves.c, rings.c, mesh.c, legend.c.
+QT2SVGOBJ = tools/qt2svg/main.o tools/qt2svg/out.o tools/qt2svg/window.o \
+	tools/qt2svg/leaves.o tools/qt2svg/rings.o tools/qt2svg/mesh.o \
+	tools/qt2svg/legend.o
+$(QT2SVGOBJ): lib/qtree.h tools/qt2svg/qt2svg.h
+qt2svg: $(QT2SVGOBJ)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QT2SVGOBJ) lib/libqtree.a $(LDLIBS)
 qtcat: tools/qtcat.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtcat.o lib/libqtree.a $(LDLIBS)
 qtmesh: tools/qtmesh.o
@@ -157,6 +162,7 @@ clean:
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
 	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o
+	rm -f $(QT2SVGOBJ)
 	rm -f $(POLYREADOBJ)
 
 .PHONY: all testprogs test demo regress mutate bench bench-peers sanitize fuzz install \

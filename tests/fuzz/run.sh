@@ -64,7 +64,7 @@ build qtleaves tools/qtleaves.c
 build qtbalance tools/qtbalance.c
 build qtmesh tools/qtmesh.c
 build qtcat tools/qtcat.c
-build qt2svg tools/qt2svg.c
+build qt2svg tools/qt2svg/*.c
 build qtbool tools/qtbool.c
 
 # Containers have no CPU governor to check, may refuse CPU binding, and
