@@ -61,7 +61,7 @@ qtbool: tools/qtbool.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbool.o lib/libqtree.a $(LDLIBS)
 $(POLYREADOBJ): lib/qtree.h tools/polyread/polyread.h
 tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
-tools/qt2svg.o tools/qtcat.o tools/qtmesh.o tools/qtbalance.o \
+tools/qtcat.o tools/qtmesh.o tools/qtbalance.o \
 tools/qtbool.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
