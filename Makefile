@@ -88,7 +88,7 @@ testprogs: all tests/fmtcheck tests/numcheck tools/genpow5 tests/rangecheck
 
 test: testprogs
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
-	bats tests
+	sh tests/run.sh
 
 # The report's case 1 through the whole pipeline: the README's gallery
 # (tests/gallery.bats fails when these files are stale) and the figures.

@@ -45,9 +45,6 @@ build() {
 	shift
 	if [ "$mode" = fast ]; then
 		AFL_QUIET=1 AFL_USE_UBSAN=1 afl-clang-fast -O1 -g -std=c99 \
-		    -D_POSIX_C_SOURCE=200809L -c -o tests/fuzz/persist.o \
-		    tests/fuzz/persist.c
-		AFL_QUIET=1 AFL_USE_UBSAN=1 afl-clang-fast -O1 -g -std=c99 \
 		    -D_POSIX_C_SOURCE=200809L -ffp-contract=off -Ilib \
 		    -include tests/fuzz/persist.h -o "tests/fuzz/$prog" "$@" \
 		    lib/*.c tests/fuzz/persist.o -lm
@@ -57,15 +54,36 @@ build() {
 	    -std=c99 -D_POSIX_C_SOURCE=200809L -ffp-contract=off -Ilib \
 	    -o "tests/fuzz/$prog" "$@" lib/*.c -lm
 }
-build polyread tools/polyread/*.c
-build qtsplit tools/qtsplit.c
-build qtstats tools/qtstats.c
-build qtleaves tools/qtleaves.c
-build qtbalance tools/qtbalance.c
-build qtmesh tools/qtmesh.c
-build qtcat tools/qtcat.c
-build qt2svg tools/qt2svg/*.c
-build qtbool tools/qtbool.c
+if [ "$mode" = fast ]; then
+	AFL_QUIET=1 AFL_USE_UBSAN=1 afl-clang-fast -O1 -g -std=c99 \
+	    -D_POSIX_C_SOURCE=200809L -c -o tests/fuzz/persist.o \
+	    tests/fuzz/persist.c
+fi
+# The builds two at a time: each compiles the library again.
+pending=
+building() {
+	"$@" &
+	pending="$pending $!"
+	# shellcheck disable=SC2086
+	set -- $pending
+	[ $# -lt 2 ] || wait_builds
+}
+wait_builds() {
+	for pid in $pending; do
+		wait "$pid" || { echo "fuzz: a build failed" >&2; exit 1; }
+	done
+	pending=
+}
+building build polyread tools/polyread/*.c
+building build qtsplit tools/qtsplit.c
+building build qtstats tools/qtstats.c
+building build qtleaves tools/qtleaves.c
+building build qtbalance tools/qtbalance.c
+building build qtmesh tools/qtmesh.c
+building build qtcat tools/qtcat.c
+building build qt2svg tools/qt2svg/*.c
+building build qtbool tools/qtbool.c
+wait_builds
 
 # Containers have no CPU governor to check, may refuse CPU binding, and
 # may pipe core dumps elsewhere: none of that matters to a short run.
@@ -87,8 +105,10 @@ if [ -n "${FUZZEXECS:-}" ]; then
 else
 	budget="-V $time"
 fi
-for target in ${FUZZTARGETS:-brep xy wkt poly csv geojson qtree cells \
-    numbered balance qtmesh qtcat qtbool mesh}; do
+# fuzzone TARGET: one target's run, its report line in $out/TARGET.result;
+# fails when afl-fuzz itself did.
+fuzzone() {
+	target=$1
 	case $target in
 	qtree)	set -- tests/fuzz/qtsplit -l 3 @@ ;;
 	cells)	set -- tests/fuzz/qtstats -l @@ ;;
@@ -100,20 +120,49 @@ for target in ${FUZZTARGETS:-brep xy wkt poly csv geojson qtree cells \
 	mesh)	set -- tests/fuzz/qt2svg @@ ;;
 	*)	set -- tests/fuzz/polyread -f "$target" @@ ;;
 	esac
-	rm -rf "${out:?}/$target"
+	rm -rf "${out:?}/$target" "$out/$target.result"
 	# shellcheck disable=SC2086
 	afl-fuzz $budget $bind -m none -t 2000 -i "tests/fuzz/seeds/$target" \
 	    -o "$out/$target" -- "$@" > "$out/$target.log" 2>&1 || {
 		echo "fuzz: afl-fuzz failed on $target; see $out/$target.log" >&2
 		tail -n 5 "$out/$target.log" >&2
-		exit 1
+		return 1
 	}
 	dir=$out/$target/default
 	execs=$(awk '$1 == "execs_done" { print $3 }' "$dir/fuzzer_stats")
 	crashes=$(find "$dir/crashes" -type f -name 'id:*' | wc -l)
 	hangs=$(find "$dir/hangs" -type f -name 'id:*' | wc -l)
 	printf 'fuzz %-8s %9s executions %3d crashes %3d hangs (%s)\n' \
-	    "$target" "$execs" "$crashes" "$hangs" "$mode"
-	[ "$crashes" -eq 0 ] && [ "$hangs" -eq 0 ] || bad=1
+	    "$target" "$execs" "$crashes" "$hangs" "$mode" > "$out/$target.result"
+}
+
+# The targets in FUZZJOBS lanes (default one a CPU; 1 when bound to a
+# CPU), each lane running its share one after another, so that a run of
+# 14 targets of FUZZTIME seconds takes 14 / FUZZJOBS of them.
+targets=${FUZZTARGETS:-brep xy wkt poly csv geojson qtree cells numbered \
+    balance qtmesh qtcat qtbool mesh}
+jobs=${FUZZJOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
+[ -z "${FUZZCPU:-}" ] || jobs=1
+lane=0
+pids=
+while [ "$lane" -lt "$jobs" ]; do
+	(
+		i=0
+		for target in $targets; do
+			[ $((i % jobs)) -eq "$lane" ] && { fuzzone "$target" || exit 1; }
+			i=$((i + 1))
+		done
+	) &
+	pids="$pids $!"
+	lane=$((lane + 1))
+done
+failed=0
+for pid in $pids; do
+	wait "$pid" || failed=1
+done
+[ "$failed" -eq 0 ] || exit 1
+for target in $targets; do
+	cat "$out/$target.result"
+	awk '{ exit !($5 == 0 && $7 == 0) }' "$out/$target.result" || bad=1
 done
 exit "$bad"
