@@ -86,7 +86,14 @@ tests/rangecheck: tests/rangecheck.c tests/splitmix.h lib/libqtree.a
 # What the suite runs beyond the programs; tests/mutate.sh builds it too.
 testprogs: all tests/fmtcheck tests/numcheck tools/genpow5 tests/rangecheck
 
-test: testprogs
+# What the suite needs from Debian: make deps installs it all; make test
+# stops at once, naming the apt-get line, when bats or mandoc is missing.
+deps:
+	sh tools/deps.sh -i
+
+test:
+	@sh tools/deps.sh -n
+	@$(MAKE) testprogs
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	sh tests/run.sh
 
@@ -165,5 +172,5 @@ clean:
 	rm -f $(QT2SVGOBJ)
 	rm -f $(POLYREADOBJ)
 
-.PHONY: all testprogs test demo regress mutate bench bench-peers sanitize fuzz install \
+.PHONY: all deps testprogs test demo regress mutate bench bench-peers sanitize fuzz install \
 	uninstall clean
