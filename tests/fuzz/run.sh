@@ -62,7 +62,7 @@ build qtsplit tools/qtsplit.c
 build qtstats tools/qtstats.c
 build qtleaves tools/qtleaves.c
 build qtbalance tools/qtbalance.c
-build qtmesh tools/qtmesh.c
+build qtmesh tools/qtmesh/*.c
 build qtcat tools/qtcat.c
 build qt2svg tools/qt2svg.c
 build qtbool tools/qtbool.c
