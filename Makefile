@@ -35,6 +35,10 @@ POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
 	tools/polyread/brep.o tools/polyread/xy.o tools/polyread/wkt.o \
 	tools/polyread/poly.o tools/polyread/csv.o tools/polyread/geojson.o \
 	tools/polyread/valid.o tools/polyread/sweep.o tools/polyread/curve.o
+# So has qtmesh.
+QTMESHOBJ = tools/qtmesh/main.o tools/qtmesh/tree.o tools/qtmesh/conform.o \
+	tools/qtmesh/bfit.o tools/qtmesh/boundary.o tools/qtmesh/join.o \
+	tools/qtmesh/rcm.o tools/qtmesh/write.o
 $(BIN): lib/libqtree.a
 polyread: $(POLYREADOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(POLYREADOBJ) lib/libqtree.a $(LDLIBS)
@@ -53,15 +57,16 @@ qt2svg: $(QT2SVGOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QT2SVGOBJ) lib/libqtree.a $(LDLIBS)
 qtcat: tools/qtcat.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtcat.o lib/libqtree.a $(LDLIBS)
-qtmesh: tools/qtmesh.o
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtmesh.o lib/libqtree.a $(LDLIBS)
+qtmesh: $(QTMESHOBJ)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QTMESHOBJ) lib/libqtree.a $(LDLIBS)
 qtbalance: tools/qtbalance.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbalance.o lib/libqtree.a $(LDLIBS)
 qtbool: tools/qtbool.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbool.o lib/libqtree.a $(LDLIBS)
 $(POLYREADOBJ): lib/qtree.h tools/polyread/polyread.h
+$(QTMESHOBJ): lib/qtree.h tools/qtmesh/qtmesh.h
 tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
-tools/qtcat.o tools/qtmesh.o tools/qtbalance.o \
+tools/qtcat.o tools/qtbalance.o \
 tools/qtbool.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
@@ -169,8 +174,7 @@ clean:
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
 	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o
-	rm -f $(QT2SVGOBJ)
-	rm -f $(POLYREADOBJ)
+	rm -f $(POLYREADOBJ) $(QTMESHOBJ) $(QT2SVGOBJ)
 
 .PHONY: all deps testprogs test demo regress mutate bench bench-peers sanitize fuzz install \
 	uninstall clean

@@ -79,7 +79,7 @@ building build qtsplit tools/qtsplit.c
 building build qtstats tools/qtstats.c
 building build qtleaves tools/qtleaves.c
 building build qtbalance tools/qtbalance.c
-building build qtmesh tools/qtmesh.c
+building build qtmesh tools/qtmesh/*.c
 building build qtcat tools/qtcat.c
 building build qt2svg tools/qt2svg/*.c
 building build qtbool tools/qtbool.c

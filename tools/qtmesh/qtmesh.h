@@ -1,0 +1,227 @@
+/*
+ * qtmesh.h: what qtmesh's files share.  The mesh being built is one
+ * struct mesh, which main.c fills from the options and the input and
+ * hands to every job: the tree and its neighbours (tree.c), the
+ * conforming templates and -H (conform.c), the -b loops (bfit.c), the
+ * boundary's side map and the ring checks (boundary.c), the -t joins
+ * (join.c), the numbering (rcm.c) and the writers (write.c).  What one job
+ * alone needs while it runs (the joins' incidence, the numbering's graph)
+ * stays in that file.
+ *
+ * Vertices are numbered from 1; 0 is "none" everywhere: a free slot, a
+ * midpoint not numbered yet, a side along no ring.
+ */
+
+enum { QTREE, MSH, VTK, TRIANGLE };	/* -f: main.c's table, in order */
+
+/*
+ * An element of a template: points of a leaf numbered counter-clockwise
+ * from the lower left corner, 0 to 7, corners even and side midpoints odd
+ * (conform.c).
+ */
+struct shape {
+	int	n;	/* 3 or 4 points */
+	int	p[4];
+};
+
+/* A kept leaf: 32 bytes. */
+struct leaf {
+	uint64_t	 ix, iy;
+	long		 lineno;
+	unsigned char	 level, class;
+	unsigned char	 hang;	/* bit k: side k's midpoint hangs */
+	unsigned char	 bnd;	/* bits 2k, 2k+1: side k's halves on the boundary */
+	unsigned char	 nel;	/* its elements, consecutive */
+};
+
+struct elem {
+	uint32_t	v[4];	/* v[3] == 0 for a triangle */
+};
+
+static inline int
+nverts(const struct elem *e)
+{
+	return e->v[3] ? 4 : 3;
+}
+
+struct hang {
+	uint32_t	v, a, b;	/* v == 0 until its vertex is numbered */
+	uint64_t	x, y;		/* grid point of v */
+};
+
+struct seg {			/* a side on the boundary, a to b */
+	uint32_t	a, b;	/* 0: the midpoint of hang h */
+	uint32_t	h;
+	uint32_t	ring;	/* -b: the ring it runs along, from 1 */
+};
+
+/* Hanging midpoints not numbered yet: grid point to hang index + 1. */
+struct pend {
+	uint64_t	x, y;
+	uint32_t	h;	/* 0: free */
+};
+
+struct linept {
+	double	line, pos;	/* x, y on a vertical line; y, x on a level one */
+};
+
+/* The vertices of -b, any doubles: a table from point to number. */
+struct bslot {
+	double		x, y;
+	uint32_t	id;	/* 0: free */
+};
+
+/*
+ * Directed sides a -> b of elements, as a table from the pair to a
+ * number: the ring a side runs along, or 1 for every side.
+ */
+struct sidemap {
+	struct sideslot {
+		uint64_t	key;	/* a << 32 | b; 0: free */
+		uint32_t	val;
+	}	*slot;
+	size_t	 cap, n;
+};
+
+/* A ring's edge along a grid line, for ringalong (boundary.c). */
+struct lineedge {
+	double		line, lo, hi;
+	uint32_t	ring;
+};
+
+struct bend {			/* a boundary side at vertex v */
+	uint32_t	v, other;	/* the side's other end */
+	uint32_t	ring;
+	uint32_t	out;		/* 1: it leaves v */
+};
+
+/* The elements a hanging mask gives, turned and spelled (conform.c). */
+struct bymask {
+	int		nel;
+	struct shape	el[10];
+};
+
+/* The mesh of grid points: the templates and -H (conform.c). */
+struct grid {
+	struct corners	*vt;
+	struct hang	*hangs;
+	size_t		 nhangs, hangcap;
+	struct pend	*pend;
+	size_t		 npend, pendcap;
+};
+
+/* -b: the loops, their points and the boundary (bfit.c, boundary.c). */
+struct bfit {
+	struct cutter	*cutter;
+	struct earclip	*ear;
+	struct point	*lpts;	/* every leaf's loops, one after another */
+	size_t		 nlpts, lptcap;
+	size_t		*lring, lringcap, nlring;	/* lring: as pring */
+	size_t		*llen, nllen, llencap;
+	size_t		*leafloops;	/* leaf i: loops [i] to [i + 1] */
+	size_t		*leafpts;	/* leaf i: its loops' points from */
+	struct linept	*vline, *hline;
+	size_t		 nvline, nhline, vlinecap, hlinecap;
+	size_t		*elstart;	/* leaf i: elements [i] to [i + 1] */
+	struct point	*poly;	/* the loops of one leaf, points taken in */
+	size_t		 npoly, polycap, *plen, nplen, plencap;
+	/* per point of lpts and poly: the ring the loop runs along, or 0 */
+	size_t		*pring, npring, pringcap;
+	/* loops of no area, set aside from poly: points, rings and lengths */
+	struct point	*flat;
+	size_t		 nflat, flatcap, *flring, nflring, flringcap, *fllen,
+			 nfllen, fllencap;
+	/* the rings as read, for sides along grid lines */
+	struct point	*rpts;
+	size_t		 nrpts, rptcap, *rlen, nrlen, rlencap, *rline, nrline,
+			 rlinecap;
+	struct bslot	*btab;
+	size_t		 btabcap;
+	struct point	*bv;	/* vertex i + 1 */
+	size_t		 nbv, bvcap;
+	struct sidemap	 ringsides;	/* sides along rings: their ring */
+	/* the rings' edges along vertical (0) and level (1) grid lines */
+	struct lineedge	*axedge[2];
+	size_t		 naxedge[2], axedgecap[2];
+	int		 axindexed;
+	struct bend	*bends;
+	size_t		 nbends, bendcap;
+};
+
+struct mesh {
+	/* the options */
+	unsigned	 keep;		/* -c: the classes of leaves kept */
+	int		 conform;	/* templates; 0 with -H */
+	int		 alltri;	/* -T, -f triangle: quads cut */
+	int		 renumber;	/* -r */
+	int		 verbose;	/* -v */
+	int		 format;	/* -f: QTREE, MSH, VTK or TRIANGLE */
+	int		 bfit;		/* -b */
+	double		 tfrac;		/* -t, or -1 */
+	const char	*outbase;	/* -o */
+	const char	*inname;
+	struct universe	 u;
+
+	struct leaf	*leaves;
+	size_t		 nleaves, leafcap;
+	struct cellset	*set;	/* the kept leaves and their ancestors */
+	struct bymask	 bymask[16];	/* by the hanging sides' mask */
+	struct elem	*elems;
+	size_t		 nelems, elemcap;
+	struct seg	*segs;
+	size_t		 nsegs, segcap;
+	uint32_t	*perm;	/* new number of vertex i + 1, with -r */
+	struct grid	 g;
+	struct bfit	 b;
+};
+
+static inline void *
+grow(void *p, size_t *cap, size_t n, size_t size)
+{
+	if (n < *cap)
+		return p;
+	*cap = *cap ? 2 * *cap : 1024;
+	return xreallocarray(p, *cap, size);
+}
+
+/* tree.c: the cell set, what lies across each side of each leaf */
+void	 findsides(struct mesh *);
+
+/* conform.c: the templates, the mesh of grid points, hanging vertices */
+void	 inittemplates(struct mesh *);
+size_t	 gridmesh(struct mesh *);
+void	 addseg(struct mesh *, uint32_t, uint32_t, uint32_t);
+
+/* bfit.c: -b, the loops of the leaves cut into elements */
+void	 bfitring(struct mesh *, const struct ring *, long);
+size_t	 bfitmesh(struct mesh *);
+void	 leafbox(const struct mesh *, const struct leaf *, double[2],
+	    double[2]);
+uint32_t bvertex(struct bfit *, double, double);
+uint32_t bvfind(const struct bfit *, double, double);
+void	 setelem(const struct bfit *, struct elem *, const uint32_t *, int);
+
+/* boundary.c: the side map, the region's boundary, the rings checked */
+void	 sideput(struct sidemap *, uint32_t, uint32_t, uint32_t);
+uint32_t sideget(const struct sidemap *, uint32_t, uint32_t);
+void	 putsides(const struct mesh *, struct sidemap *);
+void	 checkboundary(struct mesh *, int);
+void	 bfitboundary(struct mesh *);
+
+/* join.c: -t, small pieces joined to their neighbours */
+void	 jointiny(struct mesh *);
+
+/* rcm.c: bandwidth and reverse Cuthill-McKee */
+uint32_t bandwidth(const struct mesh *);
+void	 rcm(struct mesh *, size_t);
+uint32_t *inverse(const struct mesh *, size_t);
+
+/*
+ * write.c: a cell's path, for the stream and for messages; one writer a
+ * format, of nv vertices written as inv gives them
+ */
+char	*cellpath(char *, int, uint64_t, uint64_t);
+void	 writeqtree(const struct mesh *, size_t, const uint32_t *);
+void	 writemsh(const struct mesh *, size_t, const uint32_t *);
+void	 writevtk(const struct mesh *, size_t, const uint32_t *);
+void	 writetriangle(const struct mesh *, size_t, const uint32_t *);
