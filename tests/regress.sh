@@ -78,6 +78,8 @@ cases() {
 		echo "$b.qtmesh-vtk|polyread $f | qtsplit -m 3 -l 4 | qtmesh -f vtk"
 		echo "$b.qtmesh-triangle|w=\$(mktemp -d) && polyread $f | qtsplit -m 3 -l 4 | qtmesh -f triangle -o \$w/t && cat \$w/t.node \$w/t.ele; rm -rf \$w"
 		echo "$b.qtmesh-unbalanced|polyread $f | qtsplit -l 6 | qtmesh -v"
+		echo "$b.qtmesh-b|polyread $f | qtsplit -l 5 | qtbalance | qtmesh -b"
+		echo "$b.qtmesh-bt|polyread $f | qtsplit -m 2 -l 6 | qtbalance | qtmesh -b -t 0.3 -f msh"
 		echo "$b.qtcat|polyread $f | qtsplit -l 6 | qtcat"
 		echo "$b.qtcat-u|polyread $f | qtsplit -l 6 | grep -v ' E\$' | qtcat -u"
 		echo "$b.qtcat-shards|$shards $f"

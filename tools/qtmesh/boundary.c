@@ -324,7 +324,8 @@ checkboundary(struct mesh *m, int keepsegs)
 	boundarysides(m, keepsegs ? addbendsegs : addbends);
 	bends = m->b.bends;
 	nbends = m->b.nbends;
-	qsort(m->b.bends, nbends, sizeof(*bends), cmpbend);
+	if (nbends > 0)		/* bends is NULL without sides */
+		qsort(m->b.bends, nbends, sizeof(*bends), cmpbend);
 	for (i = 0; i < nbends; i = g) {
 		uint32_t v = bends[i].v;
 
