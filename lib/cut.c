@@ -636,7 +636,7 @@ splitpinches(struct cutter *ct, size_t first)
 {
 	size_t k = ct->nlp - first, i, j, ndup = 0, top = 0, out = first;
 	struct point *v = ct->lp + first, *sorted, *dup, *stack;
-	size_t *at;
+	size_t *vr = ct->lr + first, *rstack, *at;
 
 	if (k < 6) {		/* two triangles and the shared point twice */
 		addlen(ct, k);
@@ -656,6 +656,7 @@ splitpinches(struct cutter *ct, size_t first)
 		return;
 	}
 	stack = xreallocarray(NULL, k, sizeof(*stack));
+	rstack = xreallocarray(NULL, k, sizeof(*rstack));
 	at = xreallocarray(NULL, ndup, sizeof(*at));
 	for (i = 0; i < ndup; i++)
 		at[i] = (size_t)-1;
@@ -675,19 +676,25 @@ splitpinches(struct cutter *ct, size_t first)
 				if (j > from && e != NULL)
 					at[e - dup] = (size_t)-1;
 				ct->lp[out + j - from] = stack[j];
+				ct->lr[out + j - from] = rstack[j];
 			}
 			addlen(ct, top - from);
 			out += top - from;
 			top = from + 1;
+			/* the walk goes on from the point along this visit's side */
+			rstack[from] = vr[i];
 			continue;
 		}
 		if (id != (size_t)-1)
 			at[id] = top;
+		rstack[top] = vr[i];
 		stack[top++] = v[i];
 	}
 	memcpy(ct->lp + out, stack, top * sizeof(*stack));
+	memcpy(ct->lr + out, rstack, top * sizeof(*rstack));
 	addlen(ct, top);
 	free(at);
+	free(rstack);
 	free(stack);
 	free(sorted);
 }

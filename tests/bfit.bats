@@ -687,3 +687,18 @@ print(ring.get(("line", 1), 0), ring.get(("line", 2), 0), ring.get(("line", 0), 
 	sys.exit(0 if ok else 1)
 	PY
 }
+
+# A hole touching its shell at one vertex, (2, 2), valid in qtree(5): in
+# the universe [-4, 12]^2 the point lies inside a cell at levels 1 and 2
+# (the cell's loop passes it twice and is split there) and is a grid
+# corner from level 3 on.  The split loops must keep each side's ring.
+@test "a hole touching its shell at a point inside a cell meshes at every level" {
+	echo 'POLYGON((0.5 -2,2 2,0.5 6,-3 6,-3 -2,0.5 -2),(2 2,-1.15 -1.5,-1.15 5.5,2 2))' |
+	    polyread -u -4,-4,16 > t.qt
+	for l in 0 1 2 3 4 5; do
+		qtsplit -l $l t.qt | qtbalance | qtmesh -b > mesh.qt
+		bfitcheck mesh.qt
+		qtsplit -l $l t.qt | qtbalance | qtmesh -b -f msh > mesh.msh
+		bfitcheck mesh.msh t.qt
+	done
+}
