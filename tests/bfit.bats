@@ -702,3 +702,34 @@ print(ring.get(("line", 1), 0), ring.get(("line", 2), 0), ring.get(("line", 0), 
 		bfitcheck mesh.msh t.qt
 	done
 }
+
+# The boundary's ring marks, checked by where the points lie: a square
+# shell on the universe's sides (its sides run along cells' sides) and a
+# hole off the grid (its sides are pieces of loops).
+@test "triangle: -b marks each boundary vertex and side with its ring, the rest 0" {
+	echo 'POLYGON((0 0,8 0,8 8,0 8,0 0),(2.5 2.5,2.5 5.3,5.3 5.3,5.3 2.5,2.5 2.5))' |
+	    polyread -u 0,0,8 | qtsplit -l 4 | qtbalance | qtmesh -b -f triangle -o m
+	run -0 awk 'function ring(x, y) {
+		if (x == 0 || x == 8 || y == 0 || y == 8) return 1
+		if ((x == 2.5 || x == 5.3) && y >= 2.5 && y <= 5.3 ||
+		    (y == 2.5 || y == 5.3) && x >= 2.5 && x <= 5.3) return 2
+		return 0
+	    }
+	    FNR == 1 { next }
+	    FILENAME ~ /node$/ { x[$1] = $2; y[$1] = $3; r[$1] = ring($2, $3)
+		n[r[$1]]++
+		if ($4 != r[$1]) { print "vertex", $1, $4, r[$1]; bad = 1 }
+		next }
+	    FILENAME ~ /poly$/ && NF == 4 { s[$4]++
+		len[$4] += sqrt((x[$2] - x[$3]) ^ 2 + (y[$2] - y[$3]) ^ 2)
+		if (r[$2] != $4 || r[$3] != $4) { print "side", $1; bad = 1 } }
+	    END { printf "%d %d %d %d %d %.9g %.9g\n", n[0], n[1], n[2],
+		s[1], s[2], len[1], len[2]; exit bad }' m.node m.poly
+	echo "$output"
+	set -- $output
+	# vertices inside; each ring's marked vertices as many as its sides,
+	# the hole's sides cut by the grid lines 3, 3.5, ..., 5 into 6 pieces
+	# each; each ring's sides as long as the ring
+	[ "$1" -gt 0 ] && [ "$2" -eq "$4" ] && [ "$3" -eq 24 ] && [ "$5" -eq 24 ]
+	[ "$6" = 32 ] && [ "$7" = 11.2 ]
+}
