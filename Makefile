@@ -71,25 +71,25 @@ tools/qtbool.o: lib/qtree.h
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it; numcheck checks parsereal against strtod, numbench
-# times both (tools/benchnum.sh).  genpow5 writes lib/pow5.c, which is
-# committed (tests/numcheck.bats compares).  rangecheck checks qtree(5)'s
+# times both (tools/bench/benchnum.sh).  genpow5 writes lib/pow5.c, which is
+# committed (tests/lib-numbers.bats compares).  rangecheck checks qtree(5)'s
 # range rule.
-tests/fmtcheck: tests/fmtcheck.c tests/splitmix.h lib/libqtree.a
-	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtcheck.c lib/libqtree.a $(LDLIBS)
-tests/fmtbench: tests/fmtbench.c tests/splitmix.h lib/libqtree.a
-	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/fmtbench.c lib/libqtree.a $(LDLIBS)
-tests/numcheck: tests/numcheck.c tests/splitmix.h lib/libqtree.a
-	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/numcheck.c lib/libqtree.a $(LDLIBS)
-tests/numbench: tests/numbench.c lib/libqtree.a
-	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/numbench.c lib/libqtree.a $(LDLIBS)
-tools/genpow5: tools/genpow5.c
-	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tools/genpow5.c
+tests/check/fmtcheck: tests/check/fmtcheck.c tests/check/splitmix.h lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/fmtcheck.c lib/libqtree.a $(LDLIBS)
+tools/bench/fmtbench: tools/bench/fmtbench.c tests/check/splitmix.h lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -Itests/check -o $@ tools/bench/fmtbench.c lib/libqtree.a $(LDLIBS)
+tests/check/numcheck: tests/check/numcheck.c tests/check/splitmix.h lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/numcheck.c lib/libqtree.a $(LDLIBS)
+tools/bench/numbench: tools/bench/numbench.c lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tools/bench/numbench.c lib/libqtree.a $(LDLIBS)
+tools/gen/genpow5: tools/gen/genpow5.c
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tools/gen/genpow5.c
 
-tests/rangecheck: tests/rangecheck.c tests/splitmix.h lib/libqtree.a
-	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/rangecheck.c lib/libqtree.a $(LDLIBS)
+tests/check/rangecheck: tests/check/rangecheck.c tests/check/splitmix.h lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/rangecheck.c lib/libqtree.a $(LDLIBS)
 
 # What the suite runs beyond the programs; tests/mutate.sh builds it too.
-testprogs: all tests/fmtcheck tests/numcheck tools/genpow5 tests/rangecheck
+testprogs: all tests/check/fmtcheck tests/check/numcheck tools/gen/genpow5 tests/check/rangecheck
 
 # What the suite needs from Debian: make deps installs it all; make test
 # stops at once, naming the apt-get line, when bats or mandoc is missing.
@@ -115,7 +115,7 @@ demo: all
 	    ./qtmesh | ./qt2svg -w 600 -b 8,8,14,14 > samples/amoeba-mesh.svg
 	t=$$(mktemp -d) && ./polyread samples/amoeba.brep | ./qtsplit -l 7 \
 	    > $$t/a && awk -v shape=disc -v n=64 -v cx=12 -v cy=10 -v r=2.5 \
-	    -f tools/genpoly.awk | ./polyread -u 4,4,12.2 | ./qtsplit -l 7 | \
+	    -f tools/gen/genpoly.awk | ./polyread -u 4,4,12.2 | ./qtsplit -l 7 | \
 	    ./qtbool -o and $$t/a - | ./qt2svg > samples/amoeba-disc.svg; \
 	    s=$$?; rm -rf $$t; exit $$s
 	@echo "wrote $(GALLERY)"
@@ -141,14 +141,14 @@ regress: all
 mutate:
 	sh tests/mutate.sh
 
-# Times polyread and qtsplit on generated polygons and draws samples/bench.svg.
-bench: all tests/numbench
-	sh tools/bench.sh
+# Times polyread and qtsplit on generated polygons and draws tools/bench/results/bench.svg.
+bench: all tools/bench/numbench
+	sh tools/bench/bench.sh
 
 # qtree against p4est and CGAL, each when installed: counts checked, one
-# table of seconds (tools/benchpeers.sh).
+# table of seconds (tools/bench/benchpeers.sh).
 bench-peers: all
-	sh tools/benchpeers.sh
+	sh tools/bench/benchpeers.sh
 
 # Each parser under AFL++ for FUZZTIME seconds (default 60), or FUZZEXECS
 # executions; FUZZMODE=fast for the persistent build (tests/fuzz/run.sh).
@@ -168,9 +168,9 @@ uninstall:
 	for f in $(MAN5); do rm -f $(DESTDIR)$(MANPREFIX)/man5/$${f#man/}; done
 
 clean:
-	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/fmtcheck \
-	    tests/fmtbench tests/numcheck tests/numbench tools/genpow5 \
-	    tests/rangecheck \
+	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/check/fmtcheck \
+	    tools/bench/fmtbench tests/check/numcheck tools/bench/numbench tools/gen/genpow5 \
+	    tests/check/rangecheck \
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
 	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o

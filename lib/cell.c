@@ -31,7 +31,7 @@ cellcoord(double x0, double size, int level, uint64_t i)
  * s(i+1) - s(i) > U, and two reals more than U apart round to different
  * doubles.  If instead a0 and h are multiples of U, every i h and s(i) is
  * a multiple of U below 2^53 U in magnitude, a double: the corners are
- * exact, h apart.  (tests/rangecheck.c tries this on every corner of
+ * exact, h apart.  (tests/check/rangecheck.c tries this on every corner of
  * every universe of seven binades of a 5- to 7-bit floating point, and
  * the library on doubles; the simpler h >= U fails there, by ties at
  * binade boundaries and by the rounding of i h.)

@@ -35,7 +35,7 @@
  * and checked exactly to read back.
  *
  * The powers of ten are those of five in lib/pow5.c, which
- * tools/genpow5.c computes with exact integer arithmetic.
+ * tools/gen/genpow5.c computes with exact integer arithmetic.
  */
 #include <float.h>
 #include <stdint.h>

@@ -103,7 +103,7 @@ celltext(struct celltext *t, int level, int axis, uint64_t i)
 /*
  * pow5.c: 5^q for q = POW5MIN .. POW5MAX as (hi 2^64 + lo) 2^e, 2^127 <=
  * hi 2^64 + lo < 2^128, truncated (exact for 0 <= q <= 55), written by
- * tools/genpow5.c: what parsereal multiplies by and fmtreal scales by.
+ * tools/gen/genpow5.c: what parsereal multiplies by and fmtreal scales by.
  */
 #define POW5MIN	(-342)
 #define POW5MAX	325

@@ -1,5 +1,5 @@
 /*
- * pow5.c: written by tools/genpow5.c, not by hand; tests/numcheck.bats
+ * pow5.c: written by tools/gen/genpow5.c, not by hand; tests/lib-numbers.bats
  * checks that the two agree.  5^q for q = POW5MIN .. POW5MAX is
  * (hi 2^64 + lo) 2^e, 2^127 <= hi 2^64 + lo < 2^128, truncated: exact
  * for 0 <= q <= 55, below 5^q by less than 2^e for the others.
@@ -10,7 +10,7 @@
 #include "internal.h"
 
 #if POW5MIN != -342 || POW5MAX != 325
-#error "lib/internal.h and tools/genpow5.c disagree"
+#error "lib/internal.h and tools/gen/genpow5.c disagree"
 #endif
 
 const struct pow5 pow5tab[POW5MAX - POW5MIN + 1] = {

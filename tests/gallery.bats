@@ -22,7 +22,7 @@ load test_helper
 	}
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 7 > a7.qt
 	awk -v shape=disc -v n=64 -v cx=12 -v cy=10 -v r=2.5 \
-	    -f "$TOP/tools/genpoly.awk" | polyread -u 4,4,12.2 | qtsplit -l 7 |
+	    -f "$TOP/tools/gen/genpoly.awk" | polyread -u 4,4,12.2 | qtsplit -l 7 |
 	    qtbool -o and a7.qt - | qt2svg > d.svg
 	cmp -s "$SAMPLES/amoeba-disc.svg" d.svg || {
 		echo "samples/amoeba-disc.svg is stale: run make demo"
@@ -101,7 +101,7 @@ discrecipe() {
 	for c in "7 10 2.5" "9.5 10 2.5" "12 10 2.5" "15.1 15.1 1"; do
 		set -- $c
 		awk -v shape=disc -v n=64 -v cx=$1 -v cy=$2 -v r=$3 \
-		    -f "$TOP/tools/genpoly.awk" | polyread -u 4,4,12.2 > d.qt
+		    -f "$TOP/tools/gen/genpoly.awk" | polyread -u 4,4,12.2 > d.qt
 		python3 clip.py a.qt d.qt
 	done > exact
 	[ "$(tr '\n' ' ' < exact)" = "16.87516729 14.0228895 12.58621378 0 " ]

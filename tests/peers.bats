@@ -1,13 +1,13 @@
 #!/usr/bin/env bats
-# The benchmark's harnesses of p4est and CGAL (tools/peers/, make
+# The benchmark's harnesses of p4est and CGAL (tools/bench/peers/, make
 # bench-peers) count the leaves that qtsplit does; a peer that is not
 # installed skips its test, visibly.
 load test_helper
 
-# peercheck PEER PACKAGES: tools/benchpeers.sh -c for one peer.
+# peercheck PEER PACKAGES: tools/bench/benchpeers.sh -c for one peer.
 peercheck() {
 	cd "$TOP" || return 1
-	run sh tools/benchpeers.sh -c "$1"
+	run sh tools/bench/benchpeers.sh -c "$1"
 	[ "$status" -ne 77 ] || skip "$1 is not installed (Debian $2)"
 	[ "$status" -eq 0 ]
 	[[ "$output" == *"the same leaves from qtsplit and $1" ]]

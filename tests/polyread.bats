@@ -17,7 +17,7 @@ load test_helper
 }
 
 @test "brep: outer rings come out counter-clockwise and holes clockwise" {
-	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | awk -f "$TOP/tests/ringsigns.awk"'
+	run -0 bash -c 'polyread "$SAMPLES/amoeba.brep" | awk -f "$TOP/tests/oracle/ringsigns.awk"'
 	[ "$output" = "1 outer ccw
 2 hole cw" ]
 }
@@ -177,7 +177,7 @@ ring 3 outer 4" ]
 	1
 	1 2 2
 	EOF
-	run -0 bash -c 'polyread sq.poly | awk -f "$TOP/tests/ringsigns.awk"'
+	run -0 bash -c 'polyread sq.poly | awk -f "$TOP/tests/oracle/ringsigns.awk"'
 	[ "$output" = "1 outer ccw
 2 hole cw" ]
 }
@@ -333,7 +333,7 @@ ring 3 outer 4" ]
 @test "a jagged star, its edges long next to their spacing, is checked and valid" {
 	# genpoly's stars are simple by construction: one vertex per angle, in
 	# order, all outside the square hole
-	awk -v shape=star -v n=20000 -v m=0 -f "$TOP/tools/genpoly.awk" > jag.xy
+	awk -v shape=star -v n=20000 -v m=0 -f "$TOP/tools/gen/genpoly.awk" > jag.xy
 	run -0 bash -c 'polyread jag.xy | grep "^ring"'
 	[ "$output" = "ring 1 outer 20000
 ring 2 hole 4" ]
@@ -721,7 +721,7 @@ ring 3 hole 3" ]
 	    printf "%d %d\n%d %d\n%d %d\n%d %d\n\n", a, a, b, a, b, b, a, b } }' > nest.xy
 	run -0 bash -c '[ -n "${QTREE_SANITIZE:-}" ] || ulimit -v 400000
 	    polyread nest.xy > nest.qt'
-	run -0 awk -f "$TOP/tests/ringsigns.awk" nest.qt
+	run -0 awk -f "$TOP/tests/oracle/ringsigns.awk" nest.qt
 	run -0 awk '{ i = $1 - 1; want = i % 2 ? "hole cw" : "outer ccw"
 	    if ($2 " " $3 != want) { print "ring", $1, $2, $3; exit 1 } }
 	    END { print NR }' <<<"$output"

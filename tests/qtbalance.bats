@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
 # qtbalance: 2:1 balance by sides (and -c corners), checked against a tree
-# balanced by hand and by tests/levelgaps.awk and tests/levelgaps.sh, which
+# balanced by hand and by tests/oracle/levelgaps.awk and tests/oracle/levelgaps.sh, which
 # find the leaves that touch by their coordinates alone; the tree stays
 # valid, its F and P areas stay, and the children of split P leaves are
 # classified as qtsplit classifies them.
@@ -61,9 +61,9 @@ cells() {
 }
 
 # No pair of leaves touching across a side (with -c, a side or a corner)
-# that differ by more than a level: tests/levelgaps.sh finds none.
+# that differ by more than a level: tests/oracle/levelgaps.sh finds none.
 balanced() {
-	sh "$TOP/tests/levelgaps.sh" "$1" > gaps
+	sh "$TOP/tests/oracle/levelgaps.sh" "$1" > gaps
 	if [ "${2:-}" = -c ]; then
 		[ ! -s gaps ] || { head gaps; return 1; }
 	else
@@ -115,13 +115,13 @@ balanced() {
 	sed '/^node \. /,$d' a.qt | diff -u - <(sed '/^node \. /,$d' b.qt)
 }
 
-@test "the sweep of tests/levelgaps.sh finds the pairs that comparing all pairs finds" {
+@test "the sweep of tests/oracle/levelgaps.sh finds the pairs that comparing all pairs finds" {
 	# on unbalanced trees, where there are pairs to find
 	for t in "$SAMPLES/amoeba.brep 5" "$SAMPLES/apple.xy 5" "$FIXTURES/lakes.xy 7"; do
 		set -- $t
 		polyread "$1" | qtsplit -l "$2" > t.qt
-		awk -f "$TOP/tests/levelgaps.awk" t.qt | LC_ALL=C sort > want
-		sh "$TOP/tests/levelgaps.sh" t.qt > got
+		awk -f "$TOP/tests/oracle/levelgaps.awk" t.qt | LC_ALL=C sort > want
+		sh "$TOP/tests/oracle/levelgaps.sh" t.qt > got
 		grep -q '^side' want
 		grep -q '^corner' want
 		diff -u want got
@@ -138,17 +138,17 @@ balanced() {
 	side 033 1
 	side 033 2
 	EOF
-	sh "$TOP/tests/levelgaps.sh" l.qt | diff -u want -
+	sh "$TOP/tests/oracle/levelgaps.sh" l.qt | diff -u want -
 }
 
 @test "small trees are balanced by comparing all pairs of leaves" {
 	for f in "$SAMPLES/amoeba.brep" "$SAMPLES/apple.xy" "$SAMPLES/plane.wkt" "$FIXTURES/lakes.xy"; do
 		polyread "$f" | qtsplit -l 5 > t.qt
 		qtbalance t.qt > b.qt
-		awk -f "$TOP/tests/levelgaps.awk" b.qt > gaps
+		awk -f "$TOP/tests/oracle/levelgaps.awk" b.qt > gaps
 		! grep '^side' gaps
 		qtbalance -c t.qt > c.qt
-		awk -f "$TOP/tests/levelgaps.awk" c.qt > gaps
+		awk -f "$TOP/tests/oracle/levelgaps.awk" c.qt > gaps
 		[ ! -s gaps ]
 	done
 }
@@ -181,9 +181,9 @@ balanced() {
 		polyread "$f" | qtsplit -l 7 > t.qt
 		for o in "" -c; do
 			qtbalance $o t.qt > b.qt
-			run -0 awk -f "$TOP/tests/treecheck.awk" b.qt
+			run -0 awk -f "$TOP/tests/oracle/treecheck.awk" b.qt
 			[ "$output" = "cells $(cells b.qt | wc -l)" ]
-			run -0 awk -f "$TOP/tests/cellcheck.awk" b.qt
+			run -0 awk -f "$TOP/tests/oracle/cellcheck.awk" b.qt
 			[ "$output" = "checked $(grep -cE '^leaf .* [FE]$' b.qt)" ]
 			[ "$(grep -c '^leaf' b.qt)" -eq $((1 + 3 * $(grep -c '^node' b.qt))) ]
 			qtcat b.qt | cmp - b.qt

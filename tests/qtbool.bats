@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
 # qtbool: every operation against both trees expanded to the uniform grid
-# and combined by interval logic in awk (tests/boolgrid.awk); identities;
+# and combined by interval logic in awk (tests/oracle/boolgrid.awk); identities;
 # overlap bounds against overlaps computed exactly (by hand, and with
 # Python's fractions); -q's statuses; bad inputs refused with file and line.
 
@@ -56,11 +56,11 @@ cells() {
 # tree's shape.
 gridcheck() {
 	qtbool -o "$1" "$2" "$3" > r.qt
-	awk -v op="$1" -f "$TOP/tests/boolgrid.awk" "$2" "$3" r.qt > check
+	awk -v op="$1" -f "$TOP/tests/oracle/boolgrid.awk" "$2" "$3" r.qt > check
 	[ "$(wc -l < check)" -eq 1 ] || { head check; return 1; }
 	grep -q '^checked [1-9]' check
-	[ "$(awk -f "$TOP/tests/treecheck.awk" r.qt | wc -l)" -eq 1 ] ||
-		{ awk -f "$TOP/tests/treecheck.awk" r.qt | head; return 1; }
+	[ "$(awk -f "$TOP/tests/oracle/treecheck.awk" r.qt | wc -l)" -eq 1 ] ||
+		{ awk -f "$TOP/tests/oracle/treecheck.awk" r.qt | head; return 1; }
 }
 
 @test "each operation agrees, grid cell by grid cell, with both trees combined in awk" {
@@ -74,7 +74,7 @@ gridcheck() {
 	done
 	# the grid is the deeper tree's: level 8, 4^8 cells
 	qtbool -o xor "$(F a6.qt)" "$(F d8.qt)" > r.qt
-	run -0 awk -v op=xor -f "$TOP/tests/boolgrid.awk" "$(F a6.qt)" \
+	run -0 awk -v op=xor -f "$TOP/tests/oracle/boolgrid.awk" "$(F a6.qt)" \
 	    "$(F d8.qt)" r.qt
 	[ "$output" = "checked 65536" ]
 }
@@ -84,7 +84,7 @@ gridcheck() {
 	qtsplit -l 7 "$(F far.p)" > c.qt
 	qtbool -o or ab.qt c.qt > r.qt
 	run -0 awk -v nested=1 -v op1=and -v op2=or \
-	    -f "$TOP/tests/boolgrid.awk" "$(F a6.qt)" "$(F d8.qt)" c.qt r.qt
+	    -f "$TOP/tests/oracle/boolgrid.awk" "$(F a6.qt)" "$(F d8.qt)" c.qt r.qt
 	[ "$output" = "checked 65536" ]
 	# three objects, their rings numbered from 1 in each, one expression
 	[ "$(grep -E '^(object|op) ' r.qt)" = "$(printf 'object 1\nobject 2\nobject 3\nop or and 1 2 3')" ]
@@ -93,7 +93,7 @@ gridcheck() {
 	qtbool -o or c.qt ab.qt > r.qt
 	[ "$(grep -E '^(object|op) ' r.qt)" = "$(printf 'object 1\nobject 2\nobject 3\nop or 1 and 2 3')" ]
 	run -0 awk -v nested=1 -v op1=and -v op2=or \
-	    -f "$TOP/tests/boolgrid.awk" "$(F a6.qt)" "$(F d8.qt)" c.qt r.qt
+	    -f "$TOP/tests/oracle/boolgrid.awk" "$(F a6.qt)" "$(F d8.qt)" c.qt r.qt
 	[ "$output" = "checked 65536" ]
 }
 

@@ -347,7 +347,7 @@ amoeba() {
 # kept whole took 37 MB here).
 @test "-n streams: memory bounded by the sweep's front, not by the mesh" {
 	[ -z "${QTREE_SANITIZE:-}" ] || skip "the programs are built with sanitizers, which reserve terabytes of address space"
-	awk -v shape=star -v n=1000 -f "$TOP/tools/genpoly.awk" | polyread |
+	awk -v shape=star -v n=1000 -f "$TOP/tools/gen/genpoly.awk" | polyread |
 	    qtsplit -l 16 > s.qt
 	want=$(awk '$1 == "leaf" && $9 != "E" { n++ } END { print n }' s.qt)
 	run -0 bash -c 'ulimit -v 15000; qtleaves -n s.qt |

@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
 # qtmesh: meshes worked out by hand, conformity and areas checked by
-# tests/meshcheck.awk (exact integers, from the leaves by another route),
+# tests/oracle/meshcheck.awk (exact integers, from the leaves by another route),
 # unbalanced trees refused, and every export read back by a real reader.
 #
 # Balanced input: until qtbalance exists, trees whose leaves span two
@@ -162,12 +162,12 @@ EOF
 
 @test "the L-shape passes the independent checker, and a wrong mesh fails it" {
 	lshape > in.qt
-	run -0 bash -c 'qtmesh in.qt | awk -f "$TOP/tests/meshcheck.awk"'
+	run -0 bash -c 'qtmesh in.qt | awk -f "$TOP/tests/oracle/meshcheck.awk"'
 	[ "$output" = "vertices 16 elements 12 area2 68 interior_sides 14 boundary_sides 13 boundary_units 26 hang 0" ]
 	# the mesh of -H is not conforming: its boundary is not the leaves'
-	run -1 bash -c 'qtmesh -H in.qt | awk -f "$TOP/tests/meshcheck.awk"'
+	run -1 bash -c 'qtmesh -H in.qt | awk -f "$TOP/tests/oracle/meshcheck.awk"'
 	# an element turned clockwise
-	run -1 bash -c 'qtmesh in.qt | sed "s/^elem 5 quad 2 7 8 3$/elem 5 quad 3 8 7 2/" | awk -f "$TOP/tests/meshcheck.awk"'
+	run -1 bash -c 'qtmesh in.qt | sed "s/^elem 5 quad 2 7 8 3$/elem 5 quad 3 8 7 2/" | awk -f "$TOP/tests/oracle/meshcheck.awk"'
 	[[ "$output" == *"has area -"* ]]
 }
 
@@ -176,7 +176,7 @@ EOF
 		twolevel "$f" 4 > tree.qt
 		for o in "" -T -r "-r -T" "-c F" "-c FEP" "-T -c P"; do
 			qtmesh $o tree.qt > mesh.qt
-			awk -f "$TOP/tests/meshcheck.awk" mesh.qt > check ||
+			awk -f "$TOP/tests/oracle/meshcheck.awk" mesh.qt > check ||
 				{ echo "$f $o:"; cat check; return 1; }
 			h=$(qtstats mesh.qt | awk '$1 == "hanging_vertices" { print $2 }')
 			[ "${h:-0}" = 0 ]	# an empty mesh has no key
@@ -188,7 +188,7 @@ EOF
 	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt "$SAMPLES"/*.poly; do
 		twolevel "$f" 4 > tree.qt
 		qtmesh -H tree.qt > mesh.qt
-		awk -v hanging=1 -f "$TOP/tests/meshcheck.awk" mesh.qt
+		awk -v hanging=1 -f "$TOP/tests/oracle/meshcheck.awk" mesh.qt
 		n=$(grep -c '^hang ' mesh.qt || true)
 		[ "$(qtstats mesh.qt | awk '$1 == "hanging_vertices" { print $2 }')" = "$n" ]
 		[ "$(awk '$1 == "hang" { print $2 }' mesh.qt | sort | uniq -d)" = "" ]
@@ -218,7 +218,7 @@ EOF
 	n=0
 	for f in "$SHARED"/countries/*.xy "$SHARED"/lakes/*.xy "$SHARED"/triangle/*.xy; do
 		twolevel "$f" 4 | qtmesh -r > mesh.qt
-		awk -f "$TOP/tests/meshcheck.awk" mesh.qt > check ||
+		awk -f "$TOP/tests/oracle/meshcheck.awk" mesh.qt > check ||
 			{ echo "$f:"; cat check; return 1; }
 		n=$((n + 1))
 	done
@@ -257,7 +257,7 @@ EOF
 	# without leaf 201 the finer leaves meet leaf 0 at a corner only
 	sed 's/^leaf 201 3 1 4 0.5 2 0.5 P$/leaf 201 3 1 4 0.5 2 0.5 E/' in.qt > ok.qt
 	run -0 qtmesh ok.qt
-	qtmesh ok.qt | awk -f "$TOP/tests/meshcheck.awk"
+	qtmesh ok.qt | awk -f "$TOP/tests/oracle/meshcheck.awk"
 }
 
 @test "a kept leaf two levels finer is found in either half of the node across a side" {
@@ -312,7 +312,7 @@ EOF
 	twolevel "$SAMPLES/amoeba.brep" 4 > tree.qt
 	qtmesh -f msh tree.qt > m.msh
 	qtmesh tree.qt | qtstats > stats
-	qtmesh -f qtree tree.qt | awk -f "$TOP/tests/meshcheck.awk" | awk '{ print $12 }' > nbnd
+	qtmesh -f qtree tree.qt | awk -f "$TOP/tests/oracle/meshcheck.awk" | awk '{ print $12 }' > nbnd
 	run -0 "$py" -c '
 import meshio, sys
 m = meshio.read("m.msh")
@@ -416,7 +416,7 @@ print(*sorted(cls), *sorted(lev))'
 			polyread "$f" | qtsplit -l $l -L holes=$((l + 2)) | qtbalance > tree.qt
 			for o in "" "-T -r"; do
 				qtmesh $o tree.qt > mesh.qt
-				awk -f "$TOP/tests/meshcheck.awk" mesh.qt > check ||
+				awk -f "$TOP/tests/oracle/meshcheck.awk" mesh.qt > check ||
 					{ echo "$f $l $o:"; cat check; return 1; }
 				[ "$(qtstats mesh.qt | awk '$1 == "hanging_vertices" { print $2 }')" = 0 ]
 			done

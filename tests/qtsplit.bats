@@ -23,12 +23,12 @@ uniform() {
 	BEGIN { visit("", 0, 0, 0) }'
 }
 
-@test "the uniform trees that tests here expect are valid by tests/treecheck.awk" {
+@test "the uniform trees that tests here expect are valid by tests/oracle/treecheck.awk" {
 	for t in "4 1" "4 2" "2 3"; do
 		set -- $t
 		{ echo "universe 0 0 $1"; uniform $1 $2 '"F"'; } > u.qt
 		echo "cells $(( (4 ** ($2 + 1) - 1) / 3 ))" > want
-		awk -f "$TOP/tests/treecheck.awk" u.qt > got
+		awk -f "$TOP/tests/oracle/treecheck.awk" u.qt > got
 		diff -u want got
 	done
 }
@@ -119,7 +119,7 @@ uniform() {
 	polyread "$FIXTURES/touch.wkt" | qtsplit -l 6 > t.qt
 	# no violation, and every F and E leaf checked
 	awk '$1 == "leaf" && $9 != "P" { n++ } END { print "checked " n + 0 }' t.qt > want
-	awk -f "$TOP/tests/cellcheck.awk" t.qt > got
+	awk -f "$TOP/tests/oracle/cellcheck.awk" t.qt > got
 	diff -u want got
 }
 
@@ -129,7 +129,7 @@ uniform() {
 		# no violation, and every F and E leaf checked, of which some
 		awk '$1 == "leaf" && $9 != "P" { n++ } END { print "checked " n + 0 }' c.qt > want
 		! grep -qx 'checked 0' want
-		awk -f "$TOP/tests/cellcheck.awk" c.qt > got
+		awk -f "$TOP/tests/oracle/cellcheck.awk" c.qt > got
 		diff -u --label "$f want" --label got want got
 	done
 }
@@ -137,7 +137,7 @@ uniform() {
 @test "area of F leaves <= polygon area <= area of F and P leaves" {
 	for f in "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt "$SAMPLES"/*.poly; do
 		for l in 3 6 9; do
-			polyread "$f" | qtsplit -l $l | awk -f "$TOP/tests/area.awk" > a.txt
+			polyread "$f" | qtsplit -l $l | awk -f "$TOP/tests/oracle/area.awk" > a.txt
 			awk '{ v[$1] = $2 } END { exit !(v["full"] <= v["poly"] &&
 			    v["poly"] <= v["full"] + v["partial"] && v["poly"] > 0) }' a.txt ||
 			    { echo "$f level $l: $(cat a.txt)"; return 1; }
@@ -148,7 +148,7 @@ uniform() {
 @test "cells are in preorder with PATH, LEVEL, IX, IY, X, Y and SIZE consistent" {
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 9 > a.qt
 	echo "cells $(grep -cE '^(node|leaf)' a.qt)" > want
-	awk -f "$TOP/tests/treecheck.awk" a.qt > got
+	awk -f "$TOP/tests/oracle/treecheck.awk" a.qt > got
 	diff -u want got
 	# sorting the cell records by PATH reproduces their order
 	grep -E '^(node|leaf)' a.qt > cells
@@ -178,7 +178,7 @@ uniform() {
 		grep -E '^(node|leaf)' sub.qt > got
 		[ -s want ]
 		diff -u want got
-		run -0 awk -f "$TOP/tests/treecheck.awk" sub.qt
+		run -0 awk -f "$TOP/tests/oracle/treecheck.awk" sub.qt
 	done
 }
 
@@ -296,7 +296,7 @@ checkL() {
 	diff -u want got
 	deepest=$(printf '%s\n' "$@" | sort -n | tail -n 1)
 	[ "$(sed -n 3p t.qt)" = "level $deepest" ]
-	run -0 awk -f "$TOP/tests/treecheck.awk" t.qt
+	run -0 awk -f "$TOP/tests/oracle/treecheck.awk" t.qt
 	[ "$output" = "cells $(grep -cE '^(node|leaf)' t.qt)" ]
 }
 
@@ -331,7 +331,7 @@ checkL() {
 	[ -s got ]
 	awk '$1 < 3' got > low
 	[ ! -s low ]
-	run -0 awk -f "$TOP/tests/cellcheck.awk" a.qt
+	run -0 awk -f "$TOP/tests/oracle/cellcheck.awk" a.qt
 	[ "$output" = "checked $(grep -cE '^leaf .* [FE]$' a.qt)" ]
 }
 
@@ -404,7 +404,7 @@ colour red 1.50' > u.qt
 # by awk: within 15 % on a smooth outline, a jagged star, and with -m.
 @test "-v foretells the size of a deep tree before writing it" {
 	polyread "$SAMPLES/amoeba.brep" > a.qt
-	awk -v shape=star -v n=1000 -f "$TOP/tools/genpoly.awk" | polyread > s.qt
+	awk -v shape=star -v n=1000 -f "$TOP/tools/gen/genpoly.awk" | polyread > s.qt
 	for args in "-l 16 a.qt" "-l 17 s.qt" "-m 13 -l 15 s.qt" "-l 18 -r 0 a.qt"; do
 		qtsplit -v $args 2> err | awk '/^(node|leaf) /' | wc -lc > count
 		read -r cells bytes < count

@@ -287,7 +287,7 @@ value() {
 	# deep subtrees: keys of more than 16 bits take two digits to sort
 	qtsplit -l 14 -r 001222 a.qt > t3.qt
 	qtsplit -l 18 -r 001222 a.qt > t4.qt
-	awk -v shape=star -v n=300 -v m=0 -f "$TOP/tools/genpoly.awk" |
+	awk -v shape=star -v n=300 -v m=0 -f "$TOP/tools/gen/genpoly.awk" |
 	    polyread | qtsplit -l 9 > t5.qt
 	# some leaves only: neighbours across the missing ones do not count
 	qtleaves -c FP t2.qt > t6.qt
@@ -368,7 +368,7 @@ value() {
 	grep -E '^(polygon_area|perimeter) ' s > got
 	diff -u want got
 	# the plain formula, in awk, does not get it
-	run -0 bash -c 'polyread far.xy | awk -f "$TOP/tests/area.awk" | head -1'
+	run -0 bash -c 'polyread far.xy | awk -f "$TOP/tests/oracle/area.awk" | head -1'
 	[ "$output" != "poly 4" ]
 }
 
@@ -414,7 +414,7 @@ sys.exit(not abs(got - exact) <= 4000)' "$(value perimeter s)"
 		    END { exit !(v["area_full"] <= v["polygon_area"] &&
 			v["polygon_area"] <= v["area_full_partial"]) }' s
 		# the leaf areas agree with sums of SIZE^2 in awk
-		awk -f "$TOP/tests/area.awk" t.qt > a
+		awk -f "$TOP/tests/oracle/area.awk" t.qt > a
 		awk 'NR == FNR { v[$1] = $2; next }
 		    function near(a, b) { return (a - b) ^ 2 <= (1e-12 * b) ^ 2 }
 		    $1 == "full" && !near(v["area_full"], $2) { exit 1 }

@@ -112,7 +112,7 @@ cases() {
 	echo "odd.qt2svg|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qt2svg"
 	echo "odd.qtsplit|polyread samples/amoeba.brep | sed -f tests/regress/odd.sed | qtsplit -l 4"
 	# Deep streams, by checksum.
-	echo "star16.qtsplit|awk -v shape=star -v n=1000 -f tools/genpoly.awk | polyread | qtsplit -l 16 | cksum"
+	echo "star16.qtsplit|awk -v shape=star -v n=1000 -f tools/gen/genpoly.awk | polyread | qtsplit -l 16 | cksum"
 	echo "amoeba16.qtsplit|polyread samples/amoeba.brep | qtsplit -l 16 | cksum"
 	echo "amoeba16.qtleaves|polyread samples/amoeba.brep | qtsplit -l 16 | qtleaves | cksum"
 	echo "amoeba13.qtleaves-n|polyread samples/amoeba.brep | qtsplit -l 13 | qtleaves -n | cksum"

@@ -49,7 +49,7 @@ same() {
 
 @test "a generated star of 10^5 vertices at level 12, cut at levels 0, 1, 3 and 12" {
 	need_parallel
-	awk -v shape=star -v n=100000 -f "$TOP/tools/genpoly.awk" | polyread > p.qt
+	awk -v shape=star -v n=100000 -f "$TOP/tools/gen/genpoly.awk" | polyread > p.qt
 	[ "$(grep -c "^v " p.qt)" -eq 100004 ]	# and the hole's 4
 	same p.qt 12 0 1 3 12
 }
