@@ -150,6 +150,12 @@ bench: all tools/bench/numbench
 bench-peers: all
 	sh tools/bench/benchpeers.sh
 
+# qtree's boundary-fitted mesh against Gmsh's: elements, angles, P1 error,
+# time and memory, one table, saved as tools/bench/results/mesh.txt.
+bench-mesh: all
+	sh tools/bench/benchmesh.sh > tools/bench/results/mesh.txt.new && \
+	    mv tools/bench/results/mesh.txt.new tools/bench/results/mesh.txt && cat tools/bench/results/mesh.txt
+
 # Each parser under AFL++ for FUZZTIME seconds (default 60), or FUZZEXECS
 # executions; FUZZMODE=fast for the persistent build (tests/fuzz/run.sh).
 fuzz:
@@ -176,5 +182,6 @@ clean:
 	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o
 	rm -f $(POLYREADOBJ) $(QTMESHOBJ) $(QT2SVGOBJ)
 
-.PHONY: all deps testprogs test demo regress mutate bench bench-peers sanitize fuzz install \
+.PHONY: all deps testprogs test demo regress mutate bench bench-peers bench-mesh sanitize \
+	fuzz install \
 	uninstall clean

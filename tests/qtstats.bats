@@ -156,7 +156,10 @@ value() {
 	hanging_vertices 0
 	bandwidth 5
 	smallest_angle 90
+	largest_angle 90
 	largest_aspect_ratio 1
+	elements_under_20 0
+	elements_over_140 0
 	# level cells nodes leaves leaves_F leaves_E leaves_P
 	level 0 0 0 0 0 0 0
 	level 1 3 0 3 3 0 0
@@ -216,7 +219,7 @@ value() {
 	hanging_vertices 2
 	EOF
 	polyread -l 2 tri.xy | qtsplit | qtleaves -n | qtstats |
-	    grep -E '^(vertices|elements|hanging)' > got
+	    grep -E '^(vertices|elements|elements_[a-z]+|hanging_vertices) ' > got
 	diff -u want got
 	cat > want <<-'EOF'
 	vertices 19
@@ -225,7 +228,7 @@ value() {
 	hanging_vertices 4
 	EOF
 	polyread -l 2 tri.xy | qtsplit | qtleaves -n -c FPE | qtstats |
-	    grep -E '^(vertices|elements|hanging)' > got
+	    grep -E '^(vertices|elements|elements_[a-z]+|hanging_vertices) ' > got
 	diff -u want got
 }
 
@@ -276,7 +279,7 @@ value() {
 	elements_tri 2
 	hanging_vertices 1
 	EOF
-	qtstats tri.qt | grep -E '^(vertices|elements|hanging)' > got
+	qtstats tri.qt | grep -E '^(vertices|elements|elements_[a-z]+|hanging_vertices) ' > got
 	diff -u want got
 }
 
@@ -540,19 +543,96 @@ sys.exit(not abs(got - exact) <= 4000)' "$(value perimeter s)"
 	done
 }
 
-@test "a mesh's quality: bandwidth, smallest angle and aspect ratio by hand" {
+@test "a mesh's quality: bandwidth, angles and aspect ratio by hand" {
 	# the triangle's level-2 mesh: 7 quads, whose vertex numbers differ by
 	# at most 11 (elem 6: vertices 11 3 14 12); squares: 90 degrees, 1
 	printf '0 0\n2 0\n0 2\n' | polyread -l 2 | qtsplit | qtleaves -n |
-	    qtstats | grep -E '^(bandwidth|smallest|largest)' > got
-	printf 'bandwidth 11\nsmallest_angle 90\nlargest_aspect_ratio 1\n' > want
+	    qtstats | grep -E '^(bandwidth|smallest|largest|elements_(under|over))' > got
+	cat > want <<-'EOF'
+	bandwidth 11
+	smallest_angle 90
+	largest_angle 90
+	largest_aspect_ratio 1
+	elements_under_20 0
+	elements_over_140 0
+	EOF
 	diff -u want got
-	# one right triangle (0,0) (1,0) (1,1): 2, 45 degrees, sqrt(2)
+	# one right triangle (0,0) (1,0) (1,1): 2, 45 and 90 degrees, sqrt(2)
 	printf 'qtree 1\nuniverse 0 0 2\nvertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nelem 1 tri 1 2 3\nend 5\n' |
-	    qtstats | grep -E '^(bandwidth|smallest|largest)' > got
-	awk 'BEGIN { printf "bandwidth 2\nsmallest_angle 45\n"
-	    printf "largest_aspect_ratio %.17g\n", sqrt(2) }' > want
+	    qtstats | grep -E '^(bandwidth|smallest|largest|elements_(under|over))' > got
+	awk 'BEGIN { printf "bandwidth 2\nsmallest_angle 45\nlargest_angle 90\n"
+	    printf "largest_aspect_ratio %.17g\n", sqrt(2)
+	    printf "elements_under_20 0\nelements_over_140 0\n" }' > want
 	diff -u want got
+}
+
+# Writes a mesh stream of the elements given as lines "tri|quad X Y X Y ...",
+# each with vertices of its own, in a universe 0 0 32.
+meshof() {
+	awk 'BEGIN { print "qtree 1"; print "universe 0 0 32"; r = 1 }
+	    { t[NR] = $1; m[NR] = (NF - 1) / 2
+	      for (i = 2; i < NF; i += 2) { print "vertex", ++nv, $i, $(i + 1); r++ } }
+	    END { for (e = 1; e <= NR; e++) {
+		    s = "elem " e " " t[e]
+		    for (i = 0; i < m[e]; i++) s = s " " ++k
+		    print s; r++ }
+		  print "end", r }'
+}
+
+# Checks that key $1 of the qtstats output $2 is within 1e-9 of $3.
+near() {
+	awk -v k="$1" -v w="$3" '$1 == k { n++; d = $2 - w
+	    if (d < -1e-9 || d > 1e-9) { print k, $2, "wanted", w; bad = 1 } }
+	    END { exit bad || n != 1 }' "$2"
+}
+
+@test "a 30-60-90 triangle: smallest angle 30, largest 90, none out of bounds" {
+	# (0,0) (2,0) (0,2 sqrt 3): 90 at the origin, 60 at (2,0), 30 on top
+	echo "tri 0 0 2 0 0 $(awk 'BEGIN { printf "%.17g", 2 * sqrt(3) }')" |
+	    meshof | qtstats > s
+	near smallest_angle s 30
+	near largest_angle s 90
+	near largest_aspect_ratio s 2
+	grep -qx 'elements_under_20 0' s
+	grep -qx 'elements_over_140 0' s
+}
+
+@test "a 1x1 square: every angle 90 exactly" {
+	echo 'quad 1 1 2 1 2 2 1 2' | meshof | qtstats > s
+	grep -E '^(smallest|largest)_angle|^elements_(under|over)' s > got
+	printf 'smallest_angle 90\nlargest_angle 90\nelements_under_20 0\nelements_over_140 0\n' > want
+	diff -u want got
+}
+
+@test "a thin triangle is under 20, a flat one under 20 and over 140" {
+	# thin: (0,0) (10,0) (0,1), atan(1/10) = 5.71 degrees at (10,0), 90 at
+	# the origin; flat: (0,0) (2,0) (1,0.2), atan(0.2) = 11.31 at both ends
+	# of the base and 180 - 2 atan(0.2) = 157.38 at the apex
+	printf 'tri 0 0 10 0 0 1\ntri 0 0 2 0 1 0.2\n' | meshof | qtstats > s
+	near smallest_angle s "$(awk 'BEGIN { printf "%.17g", atan2(1, 10) * 45 / atan2(1, 1) }')"
+	near largest_angle s "$(awk 'BEGIN { printf "%.17g", 180 - 2 * atan2(0.2, 1) * 45 / atan2(1, 1) }')"
+	grep -qx 'elements_under_20 2' s
+	grep -qx 'elements_over_140 1' s
+}
+
+@test "a quad counts its four corners, and once however many are bad" {
+	# the parallelogram (0,0) (10,0) (20,1) (10,1): atan(1/10) = 5.71 at
+	# the first and third corners, 174.29 at the second and fourth; a
+	# 30-60-90 triangle beside it counts in neither
+	printf 'quad 0 0 10 0 20 1 10 1\ntri 0 4 2 4 0 %s\n' \
+	    "$(awk 'BEGIN { printf "%.17g", 4 + 2 * sqrt(3) }')" | meshof | qtstats > s
+	near smallest_angle s "$(awk 'BEGIN { printf "%.17g", atan2(1, 10) * 45 / atan2(1, 1) }')"
+	near largest_angle s "$(awk 'BEGIN { printf "%.17g", 180 - atan2(1, 10) * 45 / atan2(1, 1) }')"
+	grep -qx 'elements_under_20 1' s
+	grep -qx 'elements_over_140 1' s
+	# a kite whose sharp corner is its fourth, the last the loop sees:
+	# (10,1) (12,2) (10,3) (0,2), 2 atan(1/10) = 11.42 at (0,2), 2 atan(1/2)
+	# = 53.13 at (12,2) and 147.7 at the other two
+	echo 'quad 10 1 12 2 10 3 0 2' | meshof | qtstats > k
+	near smallest_angle k "$(awk 'BEGIN { printf "%.17g", 2 * atan2(1, 10) * 45 / atan2(1, 1) }')"
+	near largest_angle k "$(awk 'BEGIN { printf "%.17g", 180 - atan2(1, 10) * 45 / atan2(1, 1) - atan2(1, 2) * 45 / atan2(1, 1) }')"
+	grep -qx 'elements_under_20 1' k
+	grep -qx 'elements_over_140 1' k
 }
 
 @test "mesh records are read by one rule in every reader" {
@@ -645,7 +725,7 @@ sys.exit(not abs(got - exact) <= 4000)' "$(value perimeter s)"
 	    awk '\''$1 == "level" && $2 == 6'\'
 	grep -qx "$output" "$page"
 	printf '0 0\n2 0\n0 2\n' | polyread -l 2 | qtsplit | qtleaves -n |
-	    qtstats | grep -E '^(vertices|elements|hanging)' > got
+	    qtstats | grep -E '^(vertices|elements|elements_[a-z]+|hanging_vertices) ' > got
 	sed -n '/^\$ printf/,/^\.Ed/p' "$page" | sed '1,2d;$d' > want
 	diff -u want got
 }

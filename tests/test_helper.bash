@@ -35,3 +35,14 @@ meshio_python() {
 	return 1
 }
 export -f meshio_python
+
+# A python3 that has numpy and scipy (Debian's python3-scipy is for
+# /usr/bin/python3, which another python3 may come before on PATH).
+scipy_python() {
+	for p in python3 /usr/bin/python3; do
+		"$p" -c 'import numpy, scipy.sparse.linalg' 2>/dev/null &&
+		    { echo "$p"; return 0; }
+	done
+	return 1
+}
+export -f scipy_python

@@ -805,24 +805,25 @@ cellfigures(double area)
 	leafareafigures(area, leaves);
 }
 
-/* Elements by type, quads first, then the others by name. */
 /*
  * The quality of the elements: the largest difference of vertex numbers
  * within one (the bandwidth of the matrices a solver builds), the
- * smallest interior angle in degrees, and the largest ratio of an
- * element's longest side to its shortest.
+ * smallest and largest interior angles in degrees, the largest ratio of
+ * an element's longest side to its shortest, and the elements with an
+ * angle under 20 or over 140 degrees, the bounds of a good mesh.
  */
 static void
 quality(void)
 {
-	unsigned long long band = 0;
-	double minangle = 180, maxratio = 1;
+	unsigned long long band = 0, under = 0, over = 0;
+	double minangle = 180, maxangle = 0, maxratio = 1;
 	size_t e, i;
 
 	for (e = 0; e < mesh.nelems; e++) {
 		size_t start = mesh.eoff[e], n = mesh.eoff[e + 1] - start;
 		uint32_t lo = UINT32_MAX, hi = 0;
 		double shortest = INFINITY, longest = 0;
+		double elo = 360, ehi = 0;
 
 		for (i = 0; i < n; i++) {
 			uint32_t a = mesh.refs[start + i];
@@ -840,16 +841,24 @@ quality(void)
 			hi = a > hi ? a : hi;
 			shortest = fmin(shortest, len);
 			longest = fmax(longest, len);
-			minangle = fmin(minangle, angle);
+			elo = fmin(elo, angle);
+			ehi = fmax(ehi, angle);
 		}
 		if (hi - lo > band)
 			band = hi - lo;
 		if (shortest > 0)
 			maxratio = fmax(maxratio, longest / shortest);
+		minangle = fmin(minangle, elo);
+		maxangle = fmax(maxangle, ehi);
+		under += elo < 20;
+		over += ehi > 140;
 	}
 	putcount("bandwidth", band);
 	putreal("smallest_angle", minangle);
+	putreal("largest_angle", maxangle);
 	putreal("largest_aspect_ratio", maxratio);
+	putcount("elements_under_20", under);
+	putcount("elements_over_140", over);
 }
 
 static void
