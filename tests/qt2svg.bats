@@ -93,7 +93,7 @@ mesh() {
 
 @test "a bad option prints the usage and exits 2" {
 	run -2 --separate-stderr qt2svg -x
-	[[ "$stderr" == *"usage: qt2svg [-hnNv] [-b x0,y0,x1,y1] [-c classes] [-m margin] [-w width] [file]" ]]
+	[[ "$stderr" == *"usage: qt2svg [-hnNqv] [-b x0,y0,x1,y1] [-c classes] [-m margin] [-w width] [file]" ]]
 	run -2 --separate-stderr qt2svg a b
 	[[ "$stderr" == *usage:* ]]
 }
@@ -370,8 +370,12 @@ quarter() {
 	mesh
 	qt2svg -w 200 mesh.qt > mesh.svg
 	# 90 pixels per unit: vertex 5 (1, 1) is pixel 100 100
+	# each element filled in its leaf's class colour, the F leaves' three
+	# then the E leaf's one
 	run -0 group elements mesh.svg
-	[ "$output" = '<path d="M10 190 100 190 100 100 10 100zM100 190 190 190 190 100 100 100zM10 100 100 100 100 10 10 10zM100 100 190 100 190 10 100 10z"/>' ]
+	[ "${lines[0]}" = '<path fill="#0072B2" d="M10 190 100 190 100 100 10 100zM100 190 190 190 190 100 100 100zM10 100 100 100 100 10 10 10z"/>' ]
+	[ "${lines[1]}" = '<path fill="#56B4E9" d="M100 100 190 100 190 10 100 10z"/>' ]
+	[ "${#lines[@]}" = 2 ]
 	# the nine vertices as dots, each where px = 10 + 90 x and
 	# py = 10 + 90 (2 - y) put it, in the order of their records
 	awk '$1 == "vertex" { printf "M%d %dh0", 10 + 90 * $3, 10 + 90 * (2 - $4) }
@@ -624,10 +628,15 @@ finemesh() {
 	[ "$(group vertices fine.svg | grep -o h0 | wc -l)" = 8 ]
 	[ "$(group vertex-numbers fine.svg | grep -c '<text')" = 8 ]
 	[ "$(group element-numbers fine.svg | grep -c '<text')" = 3 ]
-	# 90 x 90 pixels shaded as 2-pixel blocks: one run a row, 45 or 46
-	# rows depending on where the blocks fall
-	n=$(group fine-elements fine.svg | grep -o z | wc -l)
-	[ "$n" -ge 45 ] && [ "$n" -le 46 ]
+	# 90 x 90 pixels, 100 to 190 across and 10 to 100 down, as 2-pixel
+	# blocks: one run a row, 45 rows, filled in the neutral grey of
+	# elements without a leaf, then shaded
+	group fine-elements fine.svg > blocks
+	[ "$(grep -c '^<path fill="#D9D9D9" d="M100 10h90v2h-90z' blocks)" = 1 ]
+	[ "$(grep '#D9D9D9' blocks | grep -o z | wc -l)" = 45 ]
+	[ "$(grep -c '^<path fill="#000000" fill-opacity="0.35" d="M100 10h90v2h-90z' blocks)" = 1 ]
+	[ "$(grep 'fill-opacity' blocks | grep -o z | wc -l)" = 45 ]
+	[ "$(grep -c '^<path' blocks)" = 2 ]
 	# 10,000 elements drawn one by one took 560 kB, 1.5 MB with -nN
 	[ "$(wc -c < fine.svg)" -lt 20000 ]
 	if command -v rsvg-convert > /dev/null; then
