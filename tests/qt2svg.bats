@@ -734,7 +734,7 @@ E5='M150 150 290 80 290 10 150 10z'
 	[ "$(pixel hand.png 185 185)" = "$WHITE" ]
 }
 
-@test "a mesh's elements without a leaf are grey, and -c leaves the others' unfilled" {
+@test "a mesh's elements without a leaf are grey, and -c leaves the others' unfilled, with -q too" {
 	handmesh
 	# without the leaves' element numbers no element has a leaf
 	sed 's/^\(leaf .*\) [0-9]*$/\1/' hand.qt > bare.qt
@@ -746,6 +746,14 @@ E5='M150 150 290 80 290 10 150 10z'
 	group elements f.svg > got
 	printf '%s\n' "<path fill=\"$F\" d=\"$E1$E3\"/>" "<path d=\"$E2$E4$E5\"/>" > want
 	diff -u want got
+	# and with -q, -c P fills the cut leaves' elements by angle alone
+	qt2svg -w 300 -q -c P hand.qt > qp.svg
+	group elements qp.svg > got
+	printf '%s\n' "<path fill=\"#D73027\" d=\"$E2\"/>" \
+	    "<path fill=\"#FEE08B\" d=\"$E4\"/>" \
+	    "<path fill=\"#FFFFBF\" d=\"$E5\"/>" "<path d=\"$E1$E3\"/>" > want
+	diff -u want got
+	grep -q '>smallest angle: 1 poor, 0 good<' qp.svg
 }
 
 @test "an element's leaf is the last before it whose number is at most the element's" {

@@ -168,10 +168,10 @@ elementfills(void)
 			pic.efill[i] = EOUTSIDE;
 			continue;
 		}
-		if (opt.qflag)
-			fill = FILLQ + anglebin(e);
+		if (k < NCLASS && !opt.drawn[k])
+			fill = NOFILL;
 		else
-			fill = k < NCLASS && !opt.drawn[k] ? NOFILL : k;
+			fill = opt.qflag ? FILLQ + anglebin(e) : k;
 		if (fill != NOFILL)
 			pic.nfill[fill]++;
 		pic.efill[i] = fill;
