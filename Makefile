@@ -48,10 +48,11 @@ qtleaves: tools/qtleaves.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtleaves.o lib/libqtree.a $(LDLIBS)
 qtstats: tools/qtstats.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o lib/libqtree.a $(LDLIBS)
-# qt2svg too: main.c, out.c, window.c, leaves.c, rings.c, mesh.c, legend.c.
+# qt2svg too: main.c, out.c, window.c, leaves.c, rings.c, mesh.c,
+# quality.c, legend.c.
 QT2SVGOBJ = tools/qt2svg/main.o tools/qt2svg/out.o tools/qt2svg/window.o \
 	tools/qt2svg/leaves.o tools/qt2svg/rings.o tools/qt2svg/mesh.o \
-	tools/qt2svg/legend.o
+	tools/qt2svg/quality.o tools/qt2svg/legend.o
 $(QT2SVGOBJ): lib/qtree.h tools/qt2svg/qt2svg.h
 qt2svg: $(QT2SVGOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QT2SVGOBJ) lib/libqtree.a $(LDLIBS)

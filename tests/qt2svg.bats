@@ -1,6 +1,7 @@
 #!/usr/bin/env bats
 # qt2svg: well-formed SVG, one square per leaf, pixel colours from a real
-# renderer, the y axis, the mesh and its numbers, and the errors.  Expected
+# renderer, the y axis, the mesh, its fills, -q's angles and its numbers,
+# and the errors.  Expected
 # coordinates follow from the man page's px/py formulas by hand; expected
 # colours are the palette the man page gives.
 #
@@ -93,7 +94,7 @@ mesh() {
 
 @test "a bad option prints the usage and exits 2" {
 	run -2 --separate-stderr qt2svg -x
-	[[ "$stderr" == *"usage: qt2svg [-hnNv] [-b x0,y0,x1,y1] [-c classes] [-m margin] [-w width] [file]" ]]
+	[[ "$stderr" == *"usage: qt2svg [-hnNqv] [-b x0,y0,x1,y1] [-c classes] [-m margin] [-w width] [file]" ]]
 	run -2 --separate-stderr qt2svg a b
 	[[ "$stderr" == *usage:* ]]
 }
@@ -370,8 +371,12 @@ quarter() {
 	mesh
 	qt2svg -w 200 mesh.qt > mesh.svg
 	# 90 pixels per unit: vertex 5 (1, 1) is pixel 100 100
+	# each element filled in its leaf's class colour, the F leaves' three
+	# then the E leaf's one
 	run -0 group elements mesh.svg
-	[ "$output" = '<path d="M10 190 100 190 100 100 10 100zM100 190 190 190 190 100 100 100zM10 100 100 100 100 10 10 10zM100 100 190 100 190 10 100 10z"/>' ]
+	[ "${lines[0]}" = '<path fill="#0072B2" d="M10 190 100 190 100 100 10 100zM100 190 190 190 190 100 100 100zM10 100 100 100 100 10 10 10z"/>' ]
+	[ "${lines[1]}" = '<path fill="#56B4E9" d="M100 100 190 100 190 10 100 10z"/>' ]
+	[ "${#lines[@]}" = 2 ]
 	# the nine vertices as dots, each where px = 10 + 90 x and
 	# py = 10 + 90 (2 - y) put it, in the order of their records
 	awk '$1 == "vertex" { printf "M%d %dh0", 10 + 90 * $3, 10 + 90 * (2 - $4) }
@@ -624,10 +629,15 @@ finemesh() {
 	[ "$(group vertices fine.svg | grep -o h0 | wc -l)" = 8 ]
 	[ "$(group vertex-numbers fine.svg | grep -c '<text')" = 8 ]
 	[ "$(group element-numbers fine.svg | grep -c '<text')" = 3 ]
-	# 90 x 90 pixels shaded as 2-pixel blocks: one run a row, 45 or 46
-	# rows depending on where the blocks fall
-	n=$(group fine-elements fine.svg | grep -o z | wc -l)
-	[ "$n" -ge 45 ] && [ "$n" -le 46 ]
+	# 90 x 90 pixels, 100 to 190 across and 10 to 100 down, as 2-pixel
+	# blocks: one run a row, 45 rows, filled in the neutral grey of
+	# elements without a leaf, then shaded
+	group fine-elements fine.svg > blocks
+	[ "$(grep -c '^<path fill="#D9D9D9" d="M100 10h90v2h-90z' blocks)" = 1 ]
+	[ "$(grep '#D9D9D9' blocks | grep -o z | wc -l)" = 45 ]
+	[ "$(grep -c '^<path fill="#000000" fill-opacity="0.35" d="M100 10h90v2h-90z' blocks)" = 1 ]
+	[ "$(grep 'fill-opacity' blocks | grep -o z | wc -l)" = 45 ]
+	[ "$(grep -c '^<path' blocks)" = 2 ]
 	# 10,000 elements drawn one by one took 560 kB, 1.5 MB with -nN
 	[ "$(wc -c < fine.svg)" -lt 20000 ]
 	if command -v rsvg-convert > /dev/null; then
@@ -653,4 +663,212 @@ finemesh() {
 	grep -q '>object 2 outer rings 1<' ab.svg
 	! grep -q 'id="outer-rings"' ab.svg
 	if command -v xmllint > /dev/null; then xmllint --noout ab.svg; fi
+}
+
+# A mesh by hand in the universe 0 0 4: four leaves of side 2, numbered,
+# F F below and above on the left, P P on the right, and five elements:
+# a right isosceles triangle (45 degrees), a sliver (atan(1/4), 14.04
+# degrees), a square (90), a triangle of atan(1/2), 26.57 degrees, and a
+# quadrilateral whose smallest angle is 63.43 degrees (31.72 in a
+# triangle's degrees).  At -w 300 a unit is 70 pixels: px = 10 + 70 x,
+# py = 10 + 70 (4 - y).
+handmesh() {
+	cat > hand.qt <<-EOF
+	qtree 1
+	universe 0 0 4
+	level 1
+	leaf 0 1 0 0 0 0 2 F 1
+	leaf 1 1 1 0 2 0 2 P 2
+	leaf 2 1 0 1 0 2 2 F 3
+	leaf 3 1 1 1 2 2 2 P 4
+	vertex 1 0 0
+	vertex 2 2 0
+	vertex 3 0 2
+	vertex 4 4 0
+	vertex 5 4 0.5
+	vertex 6 2 2
+	vertex 7 2 4
+	vertex 8 0 4
+	vertex 9 4 2
+	vertex 10 4 3
+	vertex 11 4 4
+	elem 1 tri 1 2 3
+	elem 2 tri 2 4 5
+	elem 3 quad 3 6 7 8
+	elem 4 tri 6 9 10
+	elem 5 quad 6 10 11 7
+	end 22
+	EOF
+}
+
+# The elements' subpaths by hand from px and py: (0, 0) is 10 290, (2, 0)
+# 150 290, (4, 0.5) 290 255, (2, 2) 150 150, (4, 3) 290 80, (4, 4) 290 10.
+E1='M10 290 150 290 10 150z'
+E2='M150 290 290 290 290 255z'
+E3='M10 150 150 150 150 10 10 10z'
+E4='M150 150 290 150 290 80z'
+E5='M150 150 290 80 290 10 150 10z'
+
+@test "a mesh is drawn as its elements, filled by their leaves' classes, not as the leaves' squares" {
+	handmesh
+	qt2svg -w 300 hand.qt > hand.svg
+	xmllint --noout hand.svg
+	# no leaf's square: the elements take their place
+	run -1 grep '^<g id="leaves-' hand.svg
+	# the F leaves' elements blue, the P leaves' orange, in record order
+	group elements hand.svg > got
+	printf '%s\n' "<path fill=\"$F\" d=\"$E1$E3\"/>" \
+	    "<path fill=\"$P\" d=\"$E2$E4$E5\"/>" > want
+	diff -u want got
+	grep -q '^<g id="elements" fill="none" stroke="#000000" stroke-width="1" .*clip-path="url(#mesh)">$' hand.svg
+	grep -q '>F full: elements 2<' hand.svg
+	grep -q '>P partial: elements 3<' hand.svg
+	render hand.svg hand.png
+	# inside the triangle and the sliver, their class colours
+	[ "$(pixel hand.png 45 255)" = "$F" ]
+	[ "$(pixel hand.png 255 279)" = "$P" ]
+	# beside them, inside their leaves' squares but in no element: white,
+	# where the squares were painted before, (1.5, 1.5) in the F leaf and
+	# (2.5, 1.5) in the P one
+	[ "$(pixel hand.png 115 185)" = "$WHITE" ]
+	[ "$(pixel hand.png 185 185)" = "$WHITE" ]
+}
+
+@test "a mesh's elements without a leaf are grey, and -c leaves the others' unfilled, with -q too" {
+	handmesh
+	# without the leaves' element numbers no element has a leaf
+	sed 's/^\(leaf .*\) [0-9]*$/\1/' hand.qt > bare.qt
+	qt2svg -w 300 bare.qt > bare.svg
+	[ "$(group elements bare.svg)" = "<path fill=\"#D9D9D9\" d=\"$E1$E2$E3$E4$E5\"/>" ]
+	grep -q '>no leaf: elements 5<' bare.svg
+	# -c F fills the F leaves' elements, and outlines the P leaves' only
+	qt2svg -w 300 -c F hand.qt > f.svg
+	group elements f.svg > got
+	printf '%s\n' "<path fill=\"$F\" d=\"$E1$E3\"/>" "<path d=\"$E2$E4$E5\"/>" > want
+	diff -u want got
+	# and with -q, -c P fills the cut leaves' elements by angle alone
+	qt2svg -w 300 -q -c P hand.qt > qp.svg
+	group elements qp.svg > got
+	printf '%s\n' "<path fill=\"#D73027\" d=\"$E2\"/>" \
+	    "<path fill=\"#FEE08B\" d=\"$E4\"/>" \
+	    "<path fill=\"#FFFFBF\" d=\"$E5\"/>" "<path d=\"$E1$E3\"/>" > want
+	diff -u want got
+	grep -q '>smallest angle: 1 poor, 0 good<' qp.svg
+}
+
+@test "an element's leaf is the last before it whose number is at most the element's" {
+	handmesh
+	# each element right after its leaf, as qtleaves -n writes them: the
+	# second P leaf, numbered 4, comes after element 3, so element 3 is
+	# still the F leaf numbered 3's
+	{
+		grep -v '^leaf 3 \|^vertex\|^end' hand.qt | sed '/^elem/d'
+		grep '^vertex' hand.qt
+		grep '^elem [123] ' hand.qt
+		grep '^leaf 3 ' hand.qt
+		grep '^elem [45] ' hand.qt
+		echo 'end 22'
+	} > inter.qt
+	qt2svg -w 300 inter.qt > inter.svg
+	group elements inter.svg > got
+	printf '%s\n' "<path fill=\"$F\" d=\"$E1$E3\"/>" \
+	    "<path fill=\"$P\" d=\"$E2$E4$E5\"/>" > want
+	diff -u want got
+	# the last leaf numbered 1 instead, after the others: it hides them
+	# all, and every element is its, orange
+	sed 's/^\(leaf 3 .* P\) 4$/\1 1/' hand.qt > renum.qt
+	qt2svg -w 300 renum.qt > renum.svg
+	[ "$(group elements renum.svg)" = "<path fill=\"$P\" d=\"$E1$E2$E3$E4$E5\"/>" ]
+}
+
+@test "-q colours each element by its smallest angle: a sliver red, a right isosceles triangle and a square green" {
+	handmesh
+	qt2svg -w 300 -q hand.qt > q.svg
+	xmllint --noout q.svg
+	# the bins from the poorest: the sliver (14.04), the 26.57-degree
+	# triangle (25 to 30), the quadrilateral (63.43, 60 to 70 for a
+	# quadrilateral), then the right isosceles triangle and the square
+	group elements q.svg > got
+	printf '%s\n' "<path fill=\"#D73027\" d=\"$E2\"/>" \
+	    "<path fill=\"#FEE08B\" d=\"$E4\"/>" \
+	    "<path fill=\"#FFFFBF\" d=\"$E5\"/>" \
+	    "<path fill=\"#1A9850\" d=\"$E1$E3\"/>" > want
+	diff -u want got
+	render q.svg q.png
+	[ "$(pixel q.png 255 279)" = '#D73027' ]
+	[ "$(pixel q.png 45 255)" = '#1A9850' ]
+	[ "$(pixel q.png 45 45)" = '#1A9850' ]
+	[ "$(pixel q.png 255 129)" = '#FEE08B' ]
+	[ "$(pixel q.png 185 45)" = '#FFFFBF' ]
+}
+
+@test "-q's legend shows the scale: seven colours, the bounds for triangles and quadrilaterals, the poor and good counts" {
+	handmesh
+	qt2svg -w 300 -q hand.qt > q.svg
+	# the map is 280 pixels high, so the legend's first row is at 302;
+	# the bins 30 pixels wide from the margin, poorest first
+	group angle-scale q.svg | awk -F '"' '{ print $2, $4, $6, $8, $10 }' > got
+	cat > want <<-'EOF'
+	10 302 30 12 #D73027
+	40 302 30 12 #FC8D59
+	70 302 30 12 #FEE08B
+	100 302 30 12 #FFFFBF
+	130 302 30 12 #D9EF8B
+	160 302 30 12 #91CF60
+	190 302 30 12 #1A9850
+	EOF
+	diff -u want got
+	grep -q '>smallest angle: 1 poor, 2 good</text>' q.svg
+	# the bounds under the bins' edges, a row for each kind of element
+	grep 'text-anchor="middle"' q.svg |
+	    awk -F '"' '{ t = $0; sub(/<\/text>$/, "", t); sub(/.*>/, "", t)
+		print $2, $4, t }' > got
+	cat > want <<-'EOF'
+	40 328.5 20°
+	70 328.5 25°
+	100 328.5 30°
+	130 328.5 35°
+	160 328.5 40°
+	190 328.5 45°
+	40 344.5 40°
+	70 344.5 50°
+	100 344.5 60°
+	130 344.5 70°
+	160 344.5 80°
+	190 344.5 90°
+	EOF
+	diff -u want got
+	grep -q '>triangles</text>' q.svg
+	grep -q '>quadrilaterals</text>' q.svg
+	# no class rows: the classes' colours are not drawn
+	run -1 grep -E '>(F full|P partial)' q.svg
+	render q.svg q.png
+	[ "$(pixel q.png 25 308)" = '#D73027' ]
+	[ "$(pixel q.png 115 308)" = '#FFFFBF' ]
+	[ "$(pixel q.png 205 308)" = '#1A9850' ]
+}
+
+@test "-q without a mesh says so and draws what it would without -q" {
+	holed
+	qt2svg holed.qt > plain.svg
+	run -0 --separate-stderr qt2svg -q holed.qt
+	[[ "$stderr" == *'-q: no elem records in the stream'* ]]
+	diff -u plain.svg - <<< "$output"
+}
+
+@test "qtmesh -b's boundary-fitted mesh, by class and with -q, is well-formed and renders" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | qtbalance |
+	    qtmesh -b > b.qt
+	n=$(grep -c '^elem ' b.qt)
+	for o in '' -q; do
+		qt2svg $o b.qt > b.svg
+		xmllint --noout b.svg
+		rsvg-convert -o b.png b.svg
+		[ -s b.png ]
+		run -1 grep '^<g id="leaves-' b.svg
+	done
+	# every element drawn is counted once in the legend, by class
+	qt2svg b.qt > b.svg
+	sed -n 's/.*>[FEP] [a-z]*: elements \([0-9]*\)<.*/\1/p' b.svg |
+	    awk -v n="$n" '{ s += $1 } END { exit !(s == n && NR == 3) }'
 }

@@ -53,13 +53,17 @@ inwindow(const struct cell *c)
 	    c->y < w->y0 + w->h;
 }
 
-/* A leaf record: kept when -c draws its class and it meets the window. */
+/*
+ * A leaf record: its element number kept for the mesh's elements, and
+ * the leaf kept when -c draws its class and it meets the window.
+ */
 void
 leaf(const struct cell *c)
 {
 	struct square *s;
 	int k = classindex(c->class);
 
+	leafnumber(c->id, k);
 	if (!opt.drawn[k] || !inwindow(c))
 		return;
 	pic.n[k]++;

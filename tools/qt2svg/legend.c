@@ -1,8 +1,9 @@
 /*
- * legend.c: the legend below the map: a row for each leaf class drawn,
- * each object's outer rings and holes, the elements and the vertices,
- * with their counts and swatches drawn the way the map draws them; then
- * the scale bar, the tree's level and the window, as -b takes it.
+ * legend.c: the legend below the map: a row for each leaf class drawn
+ * (with a mesh, the elements of each, or -q's scale of angles), each
+ * object's outer rings and holes, the elements and the vertices, with
+ * their counts and swatches drawn the way the map draws them; then the
+ * scale bar, the tree's level and the window, as -b takes it.
  */
 #include <math.h>
 #include <stdio.h>
@@ -39,8 +40,13 @@ legendrows(void)
 {
 	int k, n = 0;
 
-	for (k = 0; k < NCLASS; k++)
-		n += opt.drawn[k];
+	if (pic.nelems > 0 && opt.qflag)
+		n += 3;
+	else
+		for (k = 0; k < NCLASS; k++)
+			n += opt.drawn[k];
+	if (pic.nelems > 0 && !opt.qflag)
+		n += pic.nfill[FILLNOLEAF] > 0;
 	for (k = 0; k <= pic.object; k++)
 		n += (pic.nring[k][0] > 0) + (pic.nring[k][1] > 0);
 	return n + (pic.nelems > 0) + (pic.nverts > 0) + 2;
@@ -152,23 +158,106 @@ legendscale(int row)
 	outs("</text>\n");
 }
 
+#define BINW	30	/* the width of a bin of -q's scale, pixels */
+
+static void
+legendtext(long long x, long long top, const char *anchor, const char *text)
+{
+	outs("<text x=\"");
+	outhund(x);
+	outs("\" y=\"");
+	outhund(top + 1050);
+	outs("\"");
+	if (anchor != NULL) {
+		outs(" text-anchor=\"");
+		outs(anchor);
+		outs("\"");
+	}
+	outs(">");
+	outs(text);
+	outs("</text>\n");
+}
+
+/*
+ * -q's scale, in three rows: the bins' colours side by side with the
+ * counts of the poorest and the best elements, then the bounds between
+ * them in a triangle's degrees and in a quadrilateral's.
+ */
+static void
+anglescale(int row)
+{
+	char text[80], poor[24], good[24];
+	long long top = mapbottom() + (long long)(ROW * row + 2) * 100;
+	long long x = (long long)opt.margin * 100, after = x + (NQBIN * BINW +
+	    6) * 100;
+	int i, q;
+
+	outs("<g id=\"angle-scale\" stroke=\"#000000\" "
+	    "stroke-width=\"0.5\">\n");
+	for (i = 0; i < NQBIN; i++) {
+		outs("<rect x=\"");
+		outhund(x + (long long)i * BINW * 100);
+		outs("\" y=\"");
+		outhund(top);
+		outs("\" width=\"");
+		outhund(BINW * 100);
+		outs("\" height=\"12\" fill=\"");
+		outs(anglecolour[i]);
+		outs("\"/>\n");
+	}
+	outs("</g>\n");
+	fmtint(poor, pic.nfill[FILLQ]);
+	fmtint(good, pic.nfill[FILLQ + NQBIN - 1]);
+	snprintf(text, sizeof(text), "smallest angle: %s poor, %s good", poor,
+	    good);
+	legendtext(after, top, NULL, text);
+	for (q = 1; q <= 2; q++) {
+		top += ROW * 100;
+		for (i = 0; i < NQBIN - 1; i++) {
+			snprintf(text, sizeof(text), "%d\302\260",
+			    q * anglebound[i]);
+			legendtext(x + (long long)(i + 1) * BINW * 100, top,
+			    "middle", text);
+		}
+		legendtext(after, top, NULL, q == 1 ? "triangles" :
+		    "quadrilaterals");
+	}
+}
+
 void
 legend(void)
 {
-	char swatch[256], text[32], style[64];
+	char swatch[256], text[64], style[64];
 	long j;
 	int h, k, row = 0;
 
 	outs("<g id=\"legend\" font-family=\"sans-serif\" font-size=\"12\">\n");
+	if (pic.nelems > 0 && opt.qflag) {
+		anglescale(row);
+		row += 3;
+	}
 	for (k = 0; k < NCLASS; k++) {
-		if (!opt.drawn[k])
+		if (!opt.drawn[k] || (pic.nelems > 0 && opt.qflag))
 			continue;
-		snprintf(swatch, sizeof(swatch), "<rect fill=\"%s\" "
-		    "stroke=\"#000000\" stroke-opacity=\"0.35\"",
-		    classcolour[k]);
 		snprintf(text, sizeof(text), "%c %s", classletter[k],
 		    classname[k]);
-		legendrow(row++, swatch, text, pic.n[k]);
+		if (pic.nelems == 0) {
+			snprintf(swatch, sizeof(swatch), "<rect fill=\"%s\" "
+			    "stroke=\"#000000\" stroke-opacity=\"0.35\"",
+			    classcolour[k]);
+			legendrow(row++, swatch, text, pic.n[k]);
+			continue;
+		}
+		snprintf(swatch, sizeof(swatch), "<rect fill=\"%s\" "
+		    "stroke=\"#000000\"", classcolour[k]);
+		strcat(text, ": elements");
+		legendrow(row++, swatch, text, pic.nfill[k]);
+	}
+	if (pic.nelems > 0 && !opt.qflag && pic.nfill[FILLNOLEAF] > 0) {
+		snprintf(swatch, sizeof(swatch), "<rect fill=\"%s\" "
+		    "stroke=\"#000000\"", fillcolour(FILLNOLEAF));
+		legendrow(row++, swatch, "no leaf: elements",
+		    pic.nfill[FILLNOLEAF]);
 	}
 	/* Ring and mesh swatches are squares drawn the way the map draws. */
 	for (j = 0; j <= pic.object; j++) {

@@ -6,9 +6,10 @@
  * leaf of 2 pixels or more is drawn as its own square, outlined; smaller
  * leaves are merged into the blocks of a grid of cells 1 to 2 pixels wide,
  * a byte of class bits a block, written as runs along its rows.  Leaves
- * are filled by class, in few path elements of many subpaths.  The mesh's
- * elements, the rings, the mesh's vertices and the numbers go on top in
- * that order, and a legend below the map.  Nothing is written before the
+ * are filled by class, in few path elements of many subpaths.  A mesh
+ * takes the leaves' place: its elements are filled, by their leaf's class
+ * or by their smallest angle (-q).  The rings, the mesh's vertices and
+ * the numbers go on top in that order, and a legend below the map.  Nothing is written before the
  * end record: what is to be drawn is kept in world terms (squares by cell,
  * the grid, the rings, the mesh) and drawn at the end, so an invalid
  * stream gives no half-written file.  Coordinates are whole hundredths of
@@ -18,7 +19,8 @@
  *
  * main.c reads the options and the stream and draws the parts in their
  * order; a file a part: out.c (the bytes, numbers, layers), window.c (the
- * window and its grid of blocks), leaves.c, rings.c, mesh.c, legend.c.
+ * window and its grid of blocks), leaves.c, rings.c, mesh.c, quality.c
+ * (the elements' smallest angles), legend.c.
  */
 #include <stdio.h>
 #include <unistd.h>
@@ -32,7 +34,7 @@ struct picture pic = { .level = -1, .deepest = -1 };
 static void
 usage(int help)
 {
-	usageexit(help, "usage: qt2svg [-hnNv] [-b x0,y0,x1,y1] [-c classes] "
+	usageexit(help, "usage: qt2svg [-hnNqv] [-b x0,y0,x1,y1] [-c classes] "
 	    "[-m margin] [-w width] [file]\n");
 }
 
@@ -61,7 +63,20 @@ svghead(long long height)
 	outhund(pic.clipbox[2] - pic.clipbox[0]);
 	outs("\" height=\"");
 	outhund(pic.clipbox[3] - pic.clipbox[1]);
-	outs("\"/></clipPath></defs>\n");
+	outs("\"/></clipPath>");
+	/* Filled elements are cut at the map, with room for half a line. */
+	if (pic.nelems > 0) {
+		outs("<clipPath id=\"mesh\"><rect x=\"");
+		outhund(pic.box[0] - MESHPAD);
+		outs("\" y=\"");
+		outhund(pic.box[1] - MESHPAD);
+		outs("\" width=\"");
+		outhund(pic.box[2] - pic.box[0] + 2 * MESHPAD);
+		outs("\" height=\"");
+		outhund(pic.box[3] - pic.box[1] + 2 * MESHPAD);
+		outs("\"/></clipPath>");
+	}
+	outs("</defs>\n");
 }
 
 static void
@@ -69,7 +84,7 @@ writesvg(void)
 {
 	struct window *w = &pic.win;
 	double f;
-	int k, rows = legendrows();
+	int k;
 
 	if (!w->set)
 		cellwindow(0, 0, 0);
@@ -78,10 +93,12 @@ writesvg(void)
 	pic.box[3] = hund(opt.margin + w->h * w->scale);
 	for (k = 0; k < 4; k++)
 		pic.clipbox[k] = pic.box[k] + (k < 2 ? -CLIPPAD : CLIPPAD);
-	f = finest();
-	svghead(mapbottom() / 100 + (long long)ROW * rows + opt.margin);
+	f = elementfills();
+	svghead(mapbottom() / 100 + (long long)ROW * legendrows() +
+	    opt.margin);
+	/* A mesh is drawn as its elements, which take the leaves' place. */
 	for (k = 0; k < NCLASS; k++)
-		if (opt.drawn[k])
+		if (opt.drawn[k] && pic.nelems == 0)
 			leaves(k);
 	elements(f);
 	rings();
@@ -148,7 +165,7 @@ main(int argc, char *argv[])
 
 	setprogname_(argv[0]);
 	setdrawn(optclasses("FEP"));
-	while ((ch = getopt(argc, argv, "b:c:m:nNvw:h")) != -1)
+	while ((ch = getopt(argc, argv, "b:c:m:nNqvw:h")) != -1)
 		switch (ch) {
 		case 'b':
 			optwindow(optarg);
@@ -164,6 +181,9 @@ main(int argc, char *argv[])
 			break;
 		case 'N':
 			opt.Nflag = 1;
+			break;
+		case 'q':
+			opt.qflag = 1;
 			break;
 		case 'v':
 			verbose = 1;
@@ -222,6 +242,9 @@ main(int argc, char *argv[])
 	if (opt.Nflag && pic.nverts == 0)
 		warnat(qt_name(r), 0, "-N: no vertex records in the stream "
 		    "(qtleaves -n adds them)");
+	if (opt.qflag && pic.nelems == 0)
+		warnat(qt_name(r), 0, "-q: no elem records in the stream "
+		    "(qtmesh adds them)");
 	qt_close(r);
 	writesvg();
 	closeout();

@@ -17,8 +17,16 @@
 #define ROW	16		/* legend row height, pixels */
 #define NOGRID	(QT_MAXLEVEL + 1)	/* the grid's level when there is none */
 #define CLIPPAD	300		/* hundredths: the rings' strokes and dots */
+#define MESHPAD	50		/* hundredths: half the elements' widest line */
 
 enum { CF, CE, CP, NCLASS };
+
+/*
+ * An element's fill: its leaf's class, no leaf, or with -q the bin of its
+ * smallest angle, poorest first; NOFILL for none.
+ */
+enum { FILLNOLEAF = NCLASS, FILLQ, NQBIN = 7, NFILL = FILLQ + NQBIN };
+#define NOFILL	31
 
 extern const char classletter[NCLASS];
 extern const char *classname[NCLASS];
@@ -30,6 +38,7 @@ struct options {
 	int	width, margin;	/* pixels */
 	int	drawn[NCLASS];	/* the leaf classes -c draws */
 	int	nflag, Nflag;	/* element numbers, vertex numbers */
+	int	qflag;		/* -q: elements by their smallest angle */
 	int	bflag;		/* -b: a window */
 	double	bx0, by0, bx1, by1;
 };
@@ -74,6 +83,12 @@ struct ringrec {
 	long	object;		/* of a combined stream, else 0 */
 };
 
+/* A leaf's element number and class, for the elements that follow. */
+struct leafnum {
+	unsigned long long id;
+	unsigned char	 k;
+};
+
 /* The stream, as much of it as the picture needs. */
 struct picture {
 	struct universe	 u;
@@ -96,6 +111,12 @@ struct picture {
 	size_t		 nverts, vertcap;
 	unsigned long long *elems;	/* each: n, then n vertex ids */
 	size_t		 nelemw, elemcap, nelems;
+	unsigned char	*efill;		/* per element: its leaf's class, then
+					   its fill and flags (mesh.c) */
+	size_t		 efillcap;
+	struct leafnum	*lnum;		/* the leaves' element numbers */
+	size_t		 nlnum, lnumcap;
+	unsigned long long nfill[NFILL];	/* elements drawn, per fill */
 	/* set when drawing starts, in hundredths of a pixel: */
 	long long	 box[4];	/* the map: left, top, right, bottom */
 	long long	 clipbox[4];	/* and room for strokes and dots */
@@ -216,12 +237,20 @@ const char *objectstyle(char *, size_t, long);
 void	 rings(void);
 
 /* mesh.c */
+void	 leafnumber(unsigned long long, int);
 void	 meshvertex(const struct meshvertex *);
 void	 meshelem(const struct meshelem *);
-double	 finest(void);
+const char *fillcolour(int);
+double	 elementfills(void);
 void	 elements(double);
 void	 vertices(double);
 void	 numbers(double);
+
+/* quality.c */
+extern const char *anglecolour[NQBIN];
+extern const int anglebound[NQBIN - 1];
+double	 smallestangle(const unsigned long long *);
+int	 anglebin(const unsigned long long *);
 
 /* legend.c */
 int	 legendrows(void);
