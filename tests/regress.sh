@@ -111,7 +111,7 @@ cases() {
 	echo "amoeba-bfit.qt2svg|polyread samples/amoeba.brep | qtsplit -l 5 | qtbalance | qtmesh -b | qt2svg -w 400"
 	echo "amoeba-bfit.qt2svg-q|polyread samples/amoeba.brep | qtsplit -l 5 | qtbalance | qtmesh -b | qt2svg -q -w 400 -nN"
 	echo "amoeba-bfit.qt2svg-bq|polyread samples/amoeba.brep | qtsplit -l 6 | qtbalance | qtmesh -b | qt2svg -q -c F -b 8.3,8.3,13.7,12"
-	echo "star13-bfit.qt2svg-q|awk -v shape=star -v n=1000 -f tools/genpoly.awk | polyread | qtsplit -l 13 | qtbalance | qtmesh -b | qt2svg -q | cksum"
+	echo "star13-bfit.qt2svg-q|awk -v shape=star -v n=1000 -f tools/gen/genpoly.awk | polyread | qtsplit -l 13 | qtbalance | qtmesh -b | qt2svg -q | cksum"
 	# The readers' long way: numbers spelled otherwise than the writers do.
 	echo "odd.qtleaves|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtleaves -n -c FEP"
 	echo "odd.qtstats|polyread samples/amoeba.brep | qtsplit -l 5 | sed -f tests/regress/odd.sed | qtstats -l"
