@@ -96,6 +96,21 @@ xreallocarray(void *p, size_t n, size_t size)
 	return p;
 }
 
+/* The slow half of xgrow: *cap doubled, from 256, until n items fit. */
+void *
+xgrowto(void *p, size_t *cap, size_t n, size_t size)
+{
+	size_t c = *cap ? *cap : 256;
+
+	while (c < n) {
+		if (c > SIZE_MAX / 2)
+			die(1, "out of memory");
+		c *= 2;
+	}
+	*cap = c;
+	return xreallocarray(p, c, size);
+}
+
 /*
  * Zeroed memory; large blocks come as fresh pages, never written, and are
  * the tables probed at random: asked for on huge pages.

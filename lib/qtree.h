@@ -31,12 +31,20 @@ void	 warnat(const char *, long, const char *, ...);
 void	*xmalloc(size_t);
 void	*xreallocarray(void *, size_t, size_t);
 void	*xcalloc(size_t, size_t);
+void	*xgrowto(void *, size_t *, size_t, size_t);
 void	 hugepages(void *, size_t);
 char	*xstrdup(const char *);
 FILE	*openin(const char *, const char **);
 void	 progress(int, const char *, ...);
 void	 closeout(void);
 void	 usageexit(int, const char *);
+
+/* Room for n items of size in p, which holds *cap: doubled when short. */
+static inline void *
+xgrow(void *p, size_t *cap, size_t n, size_t size)
+{
+	return n <= *cap ? p : xgrowto(p, cap, n, size);
+}
 
 /*
  * parse.c: numbers read, in the C locale whatever LANG says; 0 on success

@@ -75,7 +75,7 @@ leaf(const struct cell *c)
 		block(c->level, c->ix, c->iy, CLASSBIT(c->class));
 		return;
 	}
-	pic.sq = grow(pic.sq, &pic.sqcap, pic.nsq + 1, sizeof(*pic.sq));
+	pic.sq = xgrow(pic.sq, &pic.sqcap, pic.nsq + 1, sizeof(*pic.sq));
 	s = &pic.sq[pic.nsq++];
 	s->ix = c->ix;
 	s->iy = c->iy;

@@ -30,7 +30,7 @@ leafnumber(unsigned long long id, int k)
 		pic.nlnum--;
 	if (pic.nlnum > 0 && pic.lnum[pic.nlnum - 1].k == k)
 		return;
-	pic.lnum = grow(pic.lnum, &pic.lnumcap, pic.nlnum + 1,
+	pic.lnum = xgrow(pic.lnum, &pic.lnumcap, pic.nlnum + 1,
 	    sizeof(*pic.lnum));
 	pic.lnum[pic.nlnum].id = id;
 	pic.lnum[pic.nlnum++].k = k;
@@ -57,7 +57,7 @@ elemclass(unsigned long long id)
 void
 meshvertex(const struct meshvertex *mv)
 {
-	pic.verts = grow(pic.verts, &pic.vertcap, pic.nverts + 1,
+	pic.verts = xgrow(pic.verts, &pic.vertcap, pic.nverts + 1,
 	    sizeof(*pic.verts));
 	pic.verts[pic.nverts++] = mv->p;
 }
@@ -65,12 +65,12 @@ meshvertex(const struct meshvertex *mv)
 void
 meshelem(const struct meshelem *e)
 {
-	pic.elems = grow(pic.elems, &pic.elemcap, pic.nelemw + 1 + e->n,
+	pic.elems = xgrow(pic.elems, &pic.elemcap, pic.nelemw + 1 + e->n,
 	    sizeof(*pic.elems));
 	pic.elems[pic.nelemw] = e->n;
 	memcpy(pic.elems + pic.nelemw + 1, e->v, e->n * sizeof(*e->v));
 	pic.nelemw += 1 + e->n;
-	pic.efill = grow(pic.efill, &pic.efillcap, pic.nelems + 1, 1);
+	pic.efill = xgrow(pic.efill, &pic.efillcap, pic.nelems + 1, 1);
 	pic.efill[pic.nelems++] = elemclass(e->id);
 }
 

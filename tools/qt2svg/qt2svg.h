@@ -137,19 +137,6 @@ struct layer {
 	unsigned long	 n;		/* subpaths in the current ones */
 };
 
-/* Room for n items of size in *p, which holds *cap. */
-static inline void *
-grow(void *p, size_t *cap, size_t n, size_t size)
-{
-	if (n <= *cap)
-		return p;
-	if (*cap == 0)
-		*cap = 256;
-	while (*cap < n)
-		*cap *= 2;
-	return xreallocarray(p, *cap, size);
-}
-
 static inline long long
 hund(double px)
 {

@@ -28,9 +28,9 @@ ring(const struct ring *g)
 {
 	struct ringrec *r;
 
-	pic.rv = grow(pic.rv, &pic.rvcap, pic.nrv + g->n, sizeof(*pic.rv));
+	pic.rv = xgrow(pic.rv, &pic.rvcap, pic.nrv + g->n, sizeof(*pic.rv));
 	memcpy(pic.rv + pic.nrv, g->v, g->n * sizeof(*g->v));
-	pic.rings = grow(pic.rings, &pic.ringcap, pic.nrings + 1,
+	pic.rings = xgrow(pic.rings, &pic.ringcap, pic.nrings + 1,
 	    sizeof(*pic.rings));
 	r = &pic.rings[pic.nrings++];
 	r->first = pic.nrv;
@@ -40,7 +40,7 @@ ring(const struct ring *g)
 	if (r->arcs) {
 		size_t i;
 
-		pic.ra = grow(pic.ra, &pic.racap, pic.nrv + g->n,
+		pic.ra = xgrow(pic.ra, &pic.racap, pic.nrv + g->n,
 		    sizeof(*pic.ra));
 		for (i = 0; i < g->n; i++) {
 			struct ringarc *ra = &pic.ra[pic.nrv + i];

@@ -60,7 +60,7 @@ bvertex(struct bfit *b, double x, double y)
 	}
 	k = bslot(b->btab, b->btabcap, x, y);
 	if (b->btab[k].id == 0) {
-		b->bv = grow(b->bv, &b->bvcap, b->nbv, sizeof(*b->bv));
+		b->bv = xgrow(b->bv, &b->bvcap, b->nbv + 1, sizeof(*b->bv));
 		b->bv[b->nbv].x = x;
 		b->bv[b->nbv].y = y;
 		b->btab[k].x = x;
@@ -92,7 +92,7 @@ leafbox(const struct mesh *m, const struct leaf *l, double x[2], double y[2])
 static void
 addpoint(struct point **a, size_t *n, size_t *cap, double x, double y)
 {
-	*a = grow(*a, cap, *n, sizeof(**a));
+	*a = xgrow(*a, cap, *n + 1, sizeof(**a));
 	(*a)[*n].x = x;
 	(*a)[(*n)++].y = y;
 }
@@ -100,7 +100,7 @@ addpoint(struct point **a, size_t *n, size_t *cap, double x, double y)
 static void
 addsize(size_t **a, size_t *n, size_t *cap, size_t v)
 {
-	*a = grow(*a, cap, *n, sizeof(**a));
+	*a = xgrow(*a, cap, *n + 1, sizeof(**a));
 	(*a)[(*n)++] = v;
 }
 
@@ -135,7 +135,7 @@ addllen(struct bfit *b, size_t n)
 static void
 addlinept(struct linept **a, size_t *n, size_t *cap, double line, double pos)
 {
-	*a = grow(*a, cap, *n, sizeof(**a));
+	*a = xgrow(*a, cap, *n + 1, sizeof(**a));
 	(*a)[*n].line = line + 0.0;
 	(*a)[(*n)++].pos = pos + 0.0;
 }
@@ -318,7 +318,8 @@ setelem(const struct bfit *b, struct elem *e, const uint32_t *v, int n)
 static void
 addbelem(struct mesh *m, const uint32_t *v, int n)
 {
-	m->elems = grow(m->elems, &m->elemcap, m->nelems, sizeof(*m->elems));
+	m->elems = xgrow(m->elems, &m->elemcap, m->nelems + 1,
+	    sizeof(*m->elems));
 	setelem(&m->b, &m->elems[m->nelems++], v, n);
 }
 

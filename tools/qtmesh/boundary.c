@@ -93,8 +93,8 @@ indexaxes(struct bfit *bf)
 			if (p.x != q.x && p.y != q.y)
 				continue;
 			axis = p.x != q.x;
-			bf->axedge[axis] = grow(bf->axedge[axis],
-			    &bf->axedgecap[axis], bf->naxedge[axis],
+			bf->axedge[axis] = xgrow(bf->axedge[axis],
+			    &bf->axedgecap[axis], bf->naxedge[axis] + 1,
 			    sizeof(*bf->axedge[axis]));
 			e = &bf->axedge[axis][bf->naxedge[axis]++];
 			e->line = axis ? p.y : p.x;
@@ -221,7 +221,7 @@ static void
 addbend(struct bfit *bf, uint32_t v, uint32_t other, uint32_t ring,
     uint32_t out)
 {
-	bf->bends = grow(bf->bends, &bf->bendcap, bf->nbends,
+	bf->bends = xgrow(bf->bends, &bf->bendcap, bf->nbends + 1,
 	    sizeof(*bf->bends));
 	bf->bends[bf->nbends].v = v;
 	bf->bends[bf->nbends].other = other;

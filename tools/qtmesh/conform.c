@@ -198,7 +198,8 @@ addelem(struct mesh *m, const uint64_t *x, const uint64_t *y,
 	struct elem *e;
 	int k, p;
 
-	m->elems = grow(m->elems, &m->elemcap, m->nelems, sizeof(*m->elems));
+	m->elems = xgrow(m->elems, &m->elemcap, m->nelems + 1,
+	    sizeof(*m->elems));
 	e = &m->elems[m->nelems++];
 	e->v[3] = 0;
 	for (k = 0; k < sh->n; k++) {
@@ -211,7 +212,7 @@ addelem(struct mesh *m, const uint64_t *x, const uint64_t *y,
 void
 addseg(struct mesh *m, uint32_t a, uint32_t b, uint32_t h)
 {
-	m->segs = grow(m->segs, &m->segcap, m->nsegs, sizeof(*m->segs));
+	m->segs = xgrow(m->segs, &m->segcap, m->nsegs + 1, sizeof(*m->segs));
 	m->segs[m->nsegs].a = a;
 	m->segs[m->nsegs].b = b;
 	m->segs[m->nsegs].h = h;
@@ -228,7 +229,8 @@ addhang(struct grid *g, const uint64_t *px, const uint64_t *py,
 	struct hang *hg;
 
 	id[mid] = corners_find(g->vt, px[mid], py[mid]);
-	g->hangs = grow(g->hangs, &g->hangcap, g->nhangs, sizeof(*g->hangs));
+	g->hangs = xgrow(g->hangs, &g->hangcap, g->nhangs + 1,
+	    sizeof(*g->hangs));
 	hg = &g->hangs[g->nhangs++];
 	hg->v = id[mid];
 	hg->a = id[2 * k];

@@ -160,7 +160,8 @@ smallestangle(const struct point *bv, const uint32_t *w, int n)
 static void
 remember(struct join *jn, size_t i)
 {
-	jn->undo = grow(jn->undo, &jn->undocap, jn->nundo, sizeof(*jn->undo));
+	jn->undo = xgrow(jn->undo, &jn->undocap, jn->nundo + 1,
+	    sizeof(*jn->undo));
 	jn->undo[jn->nundo].i = i;
 	jn->undo[jn->nundo].e = jn->m->elems[i];
 	jn->undo[jn->nundo++].dead = jn->edead[i];

@@ -123,7 +123,7 @@ addleaf(struct mesh *m, const struct qtrec *rec)
 	const struct cell *c = &rec->c;
 	struct leaf *l;
 
-	m->leaves = grow(m->leaves, &m->leafcap, m->nleaves,
+	m->leaves = xgrow(m->leaves, &m->leafcap, m->nleaves + 1,
 	    sizeof(*m->leaves));
 	l = &m->leaves[m->nleaves++];
 	l->ix = c->ix;

@@ -175,15 +175,6 @@ struct mesh {
 	struct bfit	 b;
 };
 
-static inline void *
-grow(void *p, size_t *cap, size_t n, size_t size)
-{
-	if (n < *cap)
-		return p;
-	*cap = *cap ? 2 * *cap : 1024;
-	return xreallocarray(p, *cap, size);
-}
-
 /* tree.c: the cell set, what lies across each side of each leaf */
 void	 findsides(struct mesh *);
 
