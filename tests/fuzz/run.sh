@@ -19,6 +19,9 @@
 # loaded 4 times over), so 10^6 executions a target take minutes to an
 # hour, not a day.  It misses what only the address sanitizer sees: try
 # its crashes and a sample of its corpus again in the default mode.
+# A clean run adds each target's executions to its total in
+# tests/fuzz/counts (FUZZCOUNT=0: not), which is kept in git: the fuzzing
+# each parser has had, whatever the runs it took.
 # FUZZTARGETS names the targets to run (default all, as in the loop
 # below).  FUZZCPU=N binds afl-fuzz and the program to CPU N
 # (afl-fuzz -b): persistent, the two hand every input back and forth, and
@@ -165,4 +168,24 @@ for target in $targets; do
 	cat "$out/$target.result"
 	awk '{ exit !($5 == 0 && $7 == 0) }' "$out/$target.result" || bad=1
 done
+# The executions of every run so far, by target, in tests/fuzz/counts (kept
+# in git): a clean run adds its own to each target's total.
+[ "$bad" -eq 0 ] && [ "${FUZZCOUNT:-1}" = 1 ] && {
+	for target in $targets; do
+		cat "$out/$target.result"
+	done | awk -v today="$(date -u +%Y-%m-%d)" '
+	    FNR == NR && /^[a-z]/ { total[$1] = $2; last[$1] = $3 " " $4 " " $5; next }
+	    FNR == NR { next }
+	    { t = $2; total[t] += $3; last[t] = $3 " " today " " substr($NF, 2, length($NF) - 2) }
+	    END {
+		print "# target  executions  last-run  date  mode (tests/fuzz/run.sh)"
+		n = 0
+		for (t in total) names[++n] = t
+		for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++)
+			if (names[j] < names[i]) { x = names[i]; names[i] = names[j]; names[j] = x }
+		for (i = 1; i <= n; i++)
+			printf "%s %d %s\n", names[i], total[names[i]], last[names[i]]
+	    }' tests/fuzz/counts - > "$out/counts.new" &&
+	    mv "$out/counts.new" tests/fuzz/counts
+}
 exit "$bad"
