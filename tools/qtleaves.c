@@ -193,6 +193,83 @@ parseformat(const char *arg)
 	return QTREE;
 }
 
+struct options {
+	enum format	 format;
+	unsigned	 keep;		/* CLASSBIT of the classes kept */
+	int		 aflag, nflag, pflag, verbose;
+};
+
+static void
+options(int argc, char *argv[], struct options *o)
+{
+	int ch;
+
+	o->format = QTREE;
+	o->keep = CLASSBIT('F') | CLASSBIT('P');
+	o->aflag = o->nflag = o->pflag = o->verbose = 0;
+	while ((ch = getopt(argc, argv, "ac:f:npvh")) != -1)
+		switch (ch) {
+		case 'a':
+			o->aflag = 1;
+			break;
+		case 'c':
+			o->keep = optclasses(optarg);
+			break;
+		case 'f':
+			o->format = parseformat(optarg);
+			break;
+		case 'n':
+			o->nflag = 1;
+			break;
+		case 'p':
+			o->pflag = o->aflag = 1;
+			break;
+		case 'v':
+			o->verbose = 1;
+			break;
+		default:
+			usage(ch == 'h');
+		}
+	if (argc - optind > 1)
+		usage(0);
+	if (o->nflag && o->format != QTREE)
+		die(2, "-n: a mesh is written in the qtree format only");
+	if (o->pflag && o->format == QTREE)
+		die(2, "-p: cut pieces are written as geojson or wkt only");
+}
+
+/* One leaf, numbered *id when kept: written, checked with -a, meshed. */
+static void
+leaf(struct qtreader *r, const struct options *o, const struct universe *u,
+    struct cell *c, unsigned long long *id)
+{
+	struct shape shape, *sh = NULL;
+	int kept = (o->keep & CLASSBIT(c->class)) != 0;
+	double frac = c->frac;
+	char class;
+
+	if (o->aflag && kept &&
+	    (class = cut_cell(cutter, c, &frac)) != c->class)
+		qt_fail(r, "leaf %s is %c, but the stream's rings make it %c: "
+		    "the rings are not the tree's", c->path, c->class, class);
+	if (kept && o->format == QTREE && frac >= 0)
+		qt_cellfrac(c, ++*id, frac);
+	else if (kept && o->format == QTREE)
+		qt_cell(c, ++*id);
+	else if (kept) {
+		if (o->pflag) {
+			shape.n = cut_loops(cutter, c, &shape.v, &shape.len);
+			if (shape.n == (size_t)-1)
+				qt_fail(r, "leaf %s: the rings do not close "
+				    "round it", c->path);
+			sh = &shape;
+		}
+		putgis(o->format, u, c, ++*id, frac, sh);
+	}
+	if (o->nflag)
+		meshleaf(c, kept, *id);
+}
+
 int
 main(int argc, char *argv[])
 {
@@ -201,64 +278,31 @@ main(int argc, char *argv[])
 	enum qtkind kind;
 	unsigned long long id = 0;
 	struct universe u = { 0, 0, 1 };
-	enum format format = QTREE;
-	unsigned keep = CLASSBIT('F') | CLASSBIT('P');
-	int ch, kept, aflag = 0, nflag = 0, pflag = 0, verbose = 0;
-	struct shape shape, *sh;
-	double frac;
-	char class;
+	struct options o;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "ac:f:npvh")) != -1)
-		switch (ch) {
-		case 'a':
-			aflag = 1;
-			break;
-		case 'c':
-			keep = optclasses(optarg);
-			break;
-		case 'f':
-			format = parseformat(optarg);
-			break;
-		case 'n':
-			nflag = 1;
-			break;
-		case 'p':
-			pflag = aflag = 1;
-			break;
-		case 'v':
-			verbose = 1;
-			break;
-		default:
-			usage(ch == 'h');
-		}
+	options(argc, argv, &o);
 	argc -= optind;
 	argv += optind;
-	if (argc > 1)
-		usage(0);
-	if (nflag && format != QTREE)
-		die(2, "-n: a mesh is written in the qtree format only");
-	if (pflag && format == QTREE)
-		die(2, "-p: cut pieces are written as geojson or wkt only");
-	if (nflag)
+	if (o.nflag)
 		corners = corners_new(0);
 
 	/* Cut cells are clipped by straight edges only (lib/cut.c). */
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
-	    (aflag ? 0 : QT_ARCS) | (verbose ? QT_VERBOSE : 0));
-	if (format == QTREE)
+	    (o.aflag ? 0 : QT_ARCS) | (o.verbose ? QT_VERBOSE : 0));
+	if (o.format == QTREE)
 		qt_header();
-	else if (format == GEOJSON)
+	else if (o.format == GEOJSON)
 		printf("{\"type\":\"FeatureCollection\",\"features\":[\n");
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
-		if (aflag && kind == QT_UNIVERSE)
+		if (o.aflag && kind == QT_UNIVERSE)
 			cutter = cut_new(&rec.u);
-		else if (aflag && kind == QT_RING)
+		else if (o.aflag && kind == QT_RING)
 			cut_addring(cutter, &rec.ring);
-		else if (aflag && kind == QT_OBJECT)
+		else if (o.aflag && kind == QT_OBJECT)
 			qt_fail(r, "-a: the cells of a combined stream are not "
 			    "those of its rings");
-		if (format != QTREE && kind != QT_LEAF) {
+		if (o.format != QTREE && kind != QT_LEAF) {
 			if (kind == QT_UNIVERSE)
 				u = rec.u;
 			continue;	/* GIS tools take the leaves alone */
@@ -276,33 +320,7 @@ main(int argc, char *argv[])
 		case QT_NODE:
 			break;
 		case QT_LEAF:
-			kept = (keep & CLASSBIT(rec.c.class)) != 0;
-			frac = rec.c.frac;
-			if (aflag && kept &&
-			    (class = cut_cell(cutter, &rec.c, &frac)) !=
-			    rec.c.class)
-				qt_fail(r, "leaf %s is %c, but the stream's rings "
-				    "make it %c: the rings are not the tree's",
-				    rec.c.path, rec.c.class, class);
-			if (kept && format == QTREE && frac >= 0)
-				qt_cellfrac(&rec.c, ++id, frac);
-			else if (kept && format == QTREE)
-				qt_cell(&rec.c, ++id);
-			else if (kept) {
-				sh = NULL;
-				if (pflag) {
-					shape.n = cut_loops(cutter, &rec.c,
-					    &shape.v, &shape.len);
-					if (shape.n == (size_t)-1)
-						qt_fail(r, "leaf %s: the rings do "
-						    "not close round it",
-						    rec.c.path);
-					sh = &shape;
-				}
-				putgis(format, &u, &rec.c, ++id, frac, sh);
-			}
-			if (nflag)
-				meshleaf(&rec.c, kept, id);
+			leaf(r, &o, &u, &rec.c, &id);
 			break;
 		case QT_VERTEX:
 		case QT_ELEM:
@@ -317,9 +335,9 @@ main(int argc, char *argv[])
 	}
 	qt_close(r);
 	cut_free(cutter);
-	if (format == QTREE)
+	if (o.format == QTREE)
 		qt_end();
-	else if (format == GEOJSON)
+	else if (o.format == GEOJSON)
 		printf("\n]}\n");
 	closeout();
 	return 0;
