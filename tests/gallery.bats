@@ -1,8 +1,23 @@
 #!/usr/bin/env bats
-# The README's gallery and recipes: the SVG files in samples/ are what the
-# pipeline makes now, and each recipe prints what a second route computes.
+# The gallery and the recipes of README and the man pages: the SVG files in
+# samples/ are what the pipeline makes now, each example extracted from its
+# document prints what it shows there, and a second route computes it too.
 
 load test_helper
+
+# runexample FILE TEXT: the example of FILE that holds TEXT, its commands
+# run where samples/ and tools/ are at hand, prints what it shows; its
+# output in got, the document's in want.
+runexample() {
+	[ -e samples ] || ln -s "$TOP/tools" "$TOP/samples" .
+	example "$1" "$2" > block
+	[ -s block ] || { echo "$1: no example holds: $2"; return 1; }
+	commands < block > run.sh
+	# lines that begin with # head a table: the page's, not the output's
+	outputs < block | grep -v '^#' > want
+	bash run.sh > got
+	diff -u want got
+}
 
 @test "the gallery SVGs in samples/ are not stale (make demo remakes them)" {
 	for l in 4 6 8; do
@@ -30,25 +45,23 @@ load test_helper
 	}
 }
 
-# The README's recipe of the amoeba and the discs, as printed there, run
+# qtbool(1)'s recipe of the amoeba and the discs, as printed there, run
 # where tools/ and samples/ are at hand.
 discrecipe() {
-	ln -s "$TOP/tools" "$TOP/samples" .
-	sed -n '/^    polyread samples\/amoeba.brep > a.qt$/,/^$/p' "$TOP/README" |
-	    sed 's/^    //' > recipe.sh
+	[ -e samples ] || ln -s "$TOP/tools" "$TOP/samples" .
+	example "$TOP/man/qtbool.1" 'for c in "7 10 2.5"' | commands > recipe.sh
 	[ "$(wc -l < recipe.sh)" -gt 10 ]
 	bash recipe.sh
 }
 
-@test "the README's table of two objects' overlap is what its recipe prints" {
+@test "qtbool(1): the table of two objects' overlap is what its recipe prints" {
 	discrecipe > got
-	sed -n '/^    # disc        level/,/^$/p' "$TOP/README" | sed '1d;$d' |
-	    sed 's/^    //' > want
+	example "$TOP/man/qtbool.1" 'for c in "7 10 2.5"' | outputs | sed 1d > want
 	[ "$(wc -l < want)" -eq 24 ]
 	diff -u want got
 }
 
-@test "the README's exact overlaps are the rings clipped by each disc, and lie in every bound" {
+@test "qtbool(1): the exact overlaps are the rings clipped by each disc, and lie in every bound" {
 	# Sutherland-Hodgman clipping of each ring by the (convex) disc in
 	# rational arithmetic: the signed area of a clipped ring is exact even
 	# where clipping leaves degenerate edges; the hole's part is taken off
@@ -105,7 +118,7 @@ discrecipe() {
 		python3 clip.py a.qt d.qt
 	done > exact
 	[ "$(tr '\n' ' ' < exact)" = "16.87516729 14.0228895 12.58621378 0 " ]
-	grep -q '^(tests/gallery.bats), are 16.87516729, 14.0228895, 12.58621378 and 0:$' "$TOP/README"
+	grep -q '^(tests/gallery.bats), are 16.87516729, 14.0228895, 12.58621378 and 0:$' "$TOP/man/qtbool.1"
 	# each disc's six levels, in the table its recipe prints
 	discrecipe > table
 	awk 'NR == FNR { x[NR] = $1; next }
@@ -114,12 +127,12 @@ discrecipe() {
 	    END { exit bad }' exact table
 }
 
-@test "the README's figures are qtstats's" {
+@test "qtstats(1): the figures at level 8 are qtstats's" {
+	runexample "$TOP/man/qtstats.1" 'qtsplit -l 8 | qtstats | grep -E'
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 | qtstats > s.txt
-	sed -n '/^and its figures at level 8/,/^4060 leaves/p' "$TOP/README" |
-	    awk 'NF == 2 && $1 ~ /^[a-zA-Z_]+$/ { print $1, $2 }' > readme.txt
+	awk 'NF == 2 && $1 ~ /^[a-zA-Z_]+$/ { print $1, $2 }' want > readme.txt
 	[ "$(wc -l < readme.txt)" -eq 10 ]
-	# the README's keys as qtstats prints them, in the README's order
+	# the page's keys as qtstats prints them, in the page's order
 	while read -r k v; do
 		awk -v k="$k" '$1 == k' s.txt
 	done < readme.txt > got
@@ -128,11 +141,11 @@ discrecipe() {
 	awk 'BEGIN { exit !(4060 / 65536 == 0.06195068359375) }'
 }
 
-@test "the README's table of figures at every level is qtstats -l's" {
+@test "qtstats(1): the table of figures at every level is qtstats -l's" {
 	# the figures themselves are checked in qtstats.bats, level by level,
 	# against qtsplit -l K's trees
-	sed -n '/^    #   K  leaves_F/,/^$/p' "$TOP/README" | sed '1d;$d' |
-	    sed 's/^    //' > readme.txt
+	runexample "$TOP/man/qtstats.1" '#   K  leaves_F'
+	cp want readme.txt
 	[ "$(wc -l < readme.txt)" -eq 13 ]
 	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 12 | qtstats -l |
 	    awk '$1 == "cut" { printf "%5d %7d %7d %7d  %-18s %-18s %.3g\n",
@@ -174,12 +187,10 @@ discrecipe() {
 	    exit !(q != "" && d <= 1e-12 * a) }'
 }
 
-@test "make demo's pipeline leaves the README's mesh example as printed" {
-	polyread "$SAMPLES/invl.brep" | qtsplit | qtleaves -n |
-	    grep -E '^(vertex|elem)' | head -4 > got
-	sed -n '/qtleaves -n | grep/,/^$/p' "$TOP/README" | sed '1d;$d' |
-	    sed 's/^    //' > readme
-	diff -u readme got
+@test "qtleaves(1): the mesh of the inverted L as printed" {
+	runexample "$TOP/man/qtleaves.1" 'invl.brep | qtsplit | qtleaves -n'
+	grep '^vertex' got | head -4 > got4
+	mv got4 got
 	# by hand: the corners of the first leaf, the unit square at 0 0,
 	# counter-clockwise from its lower left
 	printf 'vertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nvertex 4 0 1\n' > hand
@@ -221,19 +232,41 @@ discrecipe() {
 	diff -u hand got
 }
 
-@test "README: the FE-mesh pipeline gives the figures it shows, and Gmsh reads its file" {
-	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 -L holes=8 | qtbalance |
-	    qtmesh -r | qtstats | tail -10 > got
-	sed -n '/^    \$ polyread samples\/amoeba.brep | qtsplit -l 6 -L holes=8 | qtbalance |$/,/^$/p' \
-	    "$TOP/README" | awk 'NF == 2 && $1 ~ /^[a-z_0-9]+$/ { print $1, $2 }' > readme.txt
-	[ "$(wc -l < readme.txt)" -eq 10 ]
-	diff -u readme.txt got
+@test "qtmesh(1): the FE-mesh pipeline gives the figures it shows, and Gmsh reads its file" {
+	runexample "$TOP/man/qtmesh.1" 'qtmesh -r | qtstats | tail -10'
+	[ "$(awk 'NF == 2 && $1 ~ /^[a-z_0-9]+$/' want | wc -l)" -eq 10 ]
 	# and a conforming mesh has no hanging vertex, by qtstats's own count
 	grep -qx 'hanging_vertices 0' got
+	# README's third pipeline is the page's
+	example "$TOP/README" 'holes=8 | qtbalance |' | commands > readme.sh
+	example "$TOP/man/qtmesh.1" 'gmsh -check amoeba.msh' | commands > page.sh
+	[ "$(wc -l < readme.sh)" -eq 2 ]
+	grep -Fx -f readme.sh page.sh | diff -u readme.sh -
 	command -v gmsh >/dev/null || skip "gmsh not installed"
-	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 -L holes=8 | qtbalance |
-	    qtmesh -r -f msh > amoeba.msh
+	grep -v '^gmsh' page.sh | bash
 	run -0 gmsh -check amoeba.msh
 	[[ "$output" != *[Ww]arning* ]]
 	[[ "$output" != *[Ee]rror* ]]
+}
+
+@test "qtmesh(1): the boundary-fitted mesh at level 5 gives the figures it shows" {
+	runexample "$TOP/man/qtmesh.1" 'qtsplit -l 5 | qtbalance | qtmesh -b'
+	[ "$(wc -l < want)" -eq 10 ]
+}
+
+@test "qtstats(1): the plate with a hole gives 16 - pi and 16 + 2 pi, bracketed" {
+	runexample "$TOP/man/qtstats.1" 'plate-hole.qt'
+	awk '$1 == "polygon_area" { a = $2 } $1 == "perimeter" { p = $2 }
+	    $1 == "area_full" { f = $2 } $1 == "area_full_partial" { fp = $2 }
+	    END { pi = atan2(0, -1)
+	      exit !(a - (16 - pi) < 1e-13 && (16 - pi) - a < 1e-13 &&
+	        p - (16 + 2 * pi) < 1e-13 && (16 + 2 * pi) - p < 1e-13 &&
+	        f < a && a < fp) }' got
+}
+
+@test "qtleaves(1), qtstats(1): the awk recipes read as the tests above run them" {
+	grep -qF "awk '\$1 == \"leaf\" { n[\$3]++ } END { for (l in n) print l, n[l] }' | sort -n" "$TOP/man/qtstats.1"
+	grep -qF "awk '\$1 == \"area_full\" { print \$2 }'" "$TOP/man/qtstats.1"
+	grep -qF "awk '\$1 == \"leaf\" && index(\$2, \"03\") == 1'" "$TOP/man/qtsplit.1"
+	grep -qF "awk '\$1 == \"leaf\" && \$9 == \"F\" {" "$TOP/man/qtree.5"
 }

@@ -407,7 +407,7 @@ print(*sorted(cls), *sorted(lev))'
 }
 
 @test "the whole pipeline through qtbalance meshes every sample and real polygon conforming" {
-	# qtsplit | qtbalance | qtmesh, as README's FE-mesh section runs it;
+	# qtsplit | qtbalance | qtmesh, as qtmesh(1)'s FE-mesh example runs it;
 	# meshcheck.awk checks conformity, areas and boundary on its own
 	set -- "$SAMPLES"/*.brep "$SAMPLES"/*.xy "$SAMPLES"/*.wkt "$SAMPLES"/*.poly
 	[ -d "$SHARED" ] && set -- "$@" "$SHARED"/countries/*.xy "$SHARED"/lakes/*.xy

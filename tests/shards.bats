@@ -1,8 +1,9 @@
 #!/usr/bin/env bats
 # Shards over GNU parallel: qtsplit -s lists the roots of a cut, parallel -k
 # runs qtsplit -r on each, qtcat joins their streams with the top (-t), and
-# the result is byte for byte a single run, for every level of the cut; the
-# README's multi-host recipe run for real against an sshd on 127.0.0.1.
+# the result is byte for byte a single run, for every level of the cut;
+# qtsplit(1)'s recipes, the multi-host one run for real against an sshd on
+# 127.0.0.1, each extracted from the page and run at level 8.
 
 load test_helper
 
@@ -11,7 +12,7 @@ need_parallel() {
 		skip "GNU parallel is absent (Debian package parallel)"
 }
 
-# sharded FILE LEVEL K: the README's one-machine recipe, two jobs at a time.
+# sharded FILE LEVEL K: qtsplit(1)'s one-machine recipe, two jobs at a time.
 sharded() {
 	qtsplit -l "$2" -t "$3" "$1" > top.qt || return 1
 	qtsplit -l "$2" -s "$3" "$1" |
@@ -74,21 +75,26 @@ same() {
 	[ "$output" = same ]
 }
 
-@test "README: filtered where the shards are made, sealed by qtcat -u" {
+# page TEXT: the commands of qtsplit(1)'s example that holds TEXT, at
+# level 8, parallel told that we cite it.
+page() {
+	example "$TOP/man/qtsplit.1" "$1" | commands |
+	    sed 's/-l 16/-l 8/g; s/parallel /parallel --will-cite /'
+}
+
+@test "qtsplit(1): filtered where the shards are made, sealed by qtcat -u" {
 	need_parallel
 	polyread "$SAMPLES/amoeba.brep" > p.qt
 	qtsplit -l 8 p.qt | grep -v ' E$' | qtcat -u > want.qt
-	# the README's recipe: the shards' nodes and full and partial leaves
-	{ qtsplit -l 8 -t 2 p.qt | grep -v ' E$'
-	  qtsplit -l 8 -s 2 p.qt | parallel --will-cite -k \
-	      "qtsplit -l 8 -r {} p.qt | grep -E '^(node|leaf .* [FP]\$)'"; } |
-	    qtcat -u > got.qt
-	cmp got.qt want.qt
+	# the page's recipe: the shards' nodes and full and partial leaves
+	page "grep -E '^(node|leaf" > recipe.sh
+	[ "$(wc -l < recipe.sh)" -eq 4 ]
+	bash recipe.sh
+	cmp fp.qt want.qt
 	# the full leaves counted in each shard and in the top, summed
-	n=$({ qtsplit -l 8 -t 3 p.qt | awk '$1 == "leaf" && $9 == "F"' | wc -l
-	      qtsplit -l 8 -s 3 p.qt | parallel --will-cite \
-	          "qtsplit -l 8 -r {} p.qt | awk '\$1 == \"leaf\" && \$9 == \"F\"' | wc -l"; } |
-	    awk '{ n += $1 } END { print n }')
+	page 'awk '"'"'{ n += $1 } END { print n }'"'" > count.sh
+	[ "$(wc -l < count.sh)" -eq 4 ]
+	n=$(bash count.sh)
 	[ "$n" -eq "$(qtsplit -l 8 p.qt | grep -c ' F$')" ]
 }
 
@@ -159,29 +165,29 @@ teardown() {
 	stop_sshd 2>/dev/null || true
 }
 
-@test "README: the multi-host recipe over ssh, input by --basefile, shards back by --return" {
+@test "qtsplit(1): the multi-host recipe over ssh, input by --basefile, shards back by --return" {
 	need_parallel
 	start_sshd
 	polyread "$SAMPLES/amoeba.brep" > p.qt
 	qtsplit -l 8 p.qt > whole.qt
 	echo 2/qtree-test > hosts
-	# the README's recipe; the programs' directory on the remote PATH
-	qtsplit -l 8 -t 1 p.qt > top.qt
-	qtsplit -l 8 -s 1 p.qt |
-	    parallel --will-cite --ssh "ssh -F $BATS_TEST_TMPDIR/ssh/ssh.cfg" \
-	        --sshloginfile hosts --env PATH --wd "$BATS_TEST_TMPDIR/remote" \
-	        --basefile p.qt --return {}.qt --cleanup \
-	        'qtsplit -l 8 -r {} p.qt > {}.qt'
+	# the page's recipe, cut at level 1; ssh through our sshd, the
+	# programs' directory on the remote PATH
+	ssh="--ssh 'ssh -F $BATS_TEST_TMPDIR/ssh/ssh.cfg' --env PATH"
+	ssh="$ssh --wd '$BATS_TEST_TMPDIR/remote'"
+	page '--return {}.qt' | sed "s/-t 3/-t 1/; s/-s 3/-s 1/;
+	    s|parallel --will-cite |&$ssh |" > recipe.sh
+	[ "$(wc -l < recipe.sh)" -eq 6 ]
+	bash recipe.sh
 	[ "$(ls [0-3].qt | wc -l)" -eq 4 ]
-	qtsplit -l 8 -s 1 p.qt | sed 's/$/.qt/' | xargs cat | qtcat top.qt - > out.qt
-	cmp out.qt whole.qt
+	cmp tree.qt whole.qt
 	# the remote side was cleaned up
 	[ ! -e "$BATS_TEST_TMPDIR/remote/p.qt" ]
 	# the same jobs' standard outputs, brought back by ssh, in order
-	qtsplit -l 8 -s 1 p.qt |
-	    parallel --will-cite -k --ssh "ssh -F $BATS_TEST_TMPDIR/ssh/ssh.cfg" \
-	        --sshloginfile hosts --env PATH --wd "$BATS_TEST_TMPDIR/remote" \
-	        --basefile p.qt --cleanup qtsplit -l 8 -r {} p.qt |
-	    qtcat top.qt - > out.qt
-	cmp out.qt whole.qt
+	rm tree.qt
+	page 'parallel -k --sshloginfile' | sed "s/-s 3/-s 1/;
+	    s|parallel --will-cite |&$ssh |" > streams.sh
+	[ "$(wc -l < streams.sh)" -eq 3 ]
+	bash streams.sh
+	cmp tree.qt whole.qt
 }

@@ -46,3 +46,29 @@ scipy_python() {
 	return 1
 }
 export -f scipy_python
+
+# example FILE TEXT: the literal block of a document that holds TEXT: in a
+# man page the lines between .Bd and .Ed, mdoc's \e read as \; in README
+# and HACKING an indented block, the indent removed.
+example() {
+	case $1 in
+	*.[15])	awk -v t="$2" '/^\.Bd/ { b = ""; on = 1; next }
+		    /^\.Ed/ { if (on && index(b, t)) printf "%s", b; on = 0; next }
+		    on { b = b $0 "\n" }' "$1" | sed 's/\\e/\\/g' ;;
+	*)	awk -v t="$2" '/^    / { b = b substr($0, 5) "\n"; next }
+		    { if (index(b, t)) printf "%s", b; b = "" }
+		    END { if (index(b, t)) printf "%s", b }' "$1" ;;
+	esac
+}
+
+# commands: an example's commands, its "$ " lines without the prompt and
+# the indented lines that continue them.
+commands() {
+	awk '/^\$ / { sub(/^\$ /, ""); c = 1; print; next }
+	    /^ / && c { print; next } { c = 0 }'
+}
+
+# outputs: an example's other lines, what its commands print.
+outputs() {
+	awk '/^\$ / { c = 1; next } /^ / && c { next } { c = 0; print }'
+}
