@@ -352,3 +352,18 @@ qtree 1'; echo 'end 0'; } > cut.txt
 	diff -u <(echo "$want" | sort) <(echo "$got" | sort)
 	[ "$(echo "$want" | grep -c '^same$')" -eq 3 ]
 }
+
+# A node given again after the leaf of the same cell is not the node that
+# a shard's root repeats: the cell is given twice.
+@test "a node that repeats a cell given as a leaf is refused" {
+	printf '1 1\n3 1\n2 3\n' | polyread -u 0,0,4 | qtsplit -l 1 > a.qt
+	n=$(grep -n '^leaf 0 1 0 0 0 0 2 P$' a.qt | cut -d: -f1)
+	[ -n "$n" ]
+	{ sed -n '/^node \|^leaf /q;p' a.qt; echo 'node 0 1 0 0 0 0 2'; } > b.qt
+	echo "end $(($(wc -l < b.qt) + 1))" >> b.qt
+	m=$(grep -n '^node 0 ' b.qt | cut -d: -f1)
+	for u in "" -u; do
+		run -1 --separate-stderr qtcat $u a.qt b.qt
+		[ "$stderr" = "qtcat: b.qt:$m: cell 0 given twice: also at a.qt:$n" ]
+	done
+}

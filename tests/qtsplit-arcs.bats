@@ -326,3 +326,22 @@ print("%.14g" % (3 * math.pi))' > want
 	run -0 awk '$1 == "elem" && ($3 != "quad" || NF != 7)' m.qt
 	[ -z "$output" ]
 }
+
+# A whole circle of radius 5 about the origin passes through the grid
+# points (4, 3), (3, 4) and (0, 5) of the universe [-8, 8]^2 at level 4
+# and enters none of the cells [4, 5] x [3, 4], [3, 4] x [4, 5] and
+# [0, 1] x [5, 6] that have them as lower left corners (x^2 + y^2 > 25
+# everywhere else in them): a grid point on the circle is not inside it.
+@test "a circle through grid points leaves the cells outside it that touch it there empty" {
+	printf 'qtree 1\nuniverse -8 -8 16\nring 1 outer 4\nv 5 0\na 0 5\nv -5 0\na 0 -5\nend 6\n' > c.qt
+	for l in 4 5 6; do
+		qtsplit -l $l c.qt > t.qt
+		run -0 awk '$1 == "leaf" && ($2 == "3122" || $2 == "3211" ||
+		    $2 == "3202") { print $2, $9 }' t.qt
+		[ "$output" = "$(printf '3122 E\n3202 E\n3211 E')" ]
+		python3 "$TOP/tests/oracle/arcclass.py" $l c.qt > want
+		awk '$1 == "node" { print $1, $2, $3, $4, $5 }
+		    $1 == "leaf" { print $1, $2, $3, $4, $5, $9 }' t.qt |
+		    diff -u want -
+	done
+}

@@ -443,3 +443,14 @@ colour red 1.50' > u.qt
 	echo "qtsplit: $start at start, $run in all"
 	[ $((run - start)) -lt 64 ]
 }
+
+# A ring outside the universe that touches its left side at one point,
+# (0, 0.5), meets no open cell: the root is one empty leaf.  (polyread
+# refuses vertices outside the universe; a stream written by hand may
+# hold them.)
+@test "a ring touching the universe's side from outside leaves the root one empty leaf" {
+	printf 'qtree 1\nuniverse 0 0 1\nring 1 outer 3\nv -1 0.25\nv 0 0.5\nv -1 0.75\nend 5\n' |
+	    qtsplit -l 2 > t.qt
+	run -0 grep -E '^(node|leaf) ' t.qt
+	[ "$output" = "leaf . 0 0 0 0 0 1 E" ]
+}
