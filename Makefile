@@ -103,6 +103,12 @@ test:
 	mandoc -T lint -W warning $(MAN1) $(MAN5)
 	sh tests/run.sh
 
+# The slowest tests alone (tests/long.txt), which make test skips.
+check-long:
+	@sh tools/deps.sh -n
+	@$(MAKE) testprogs
+	QTREE_LONG=only sh tests/run.sh
+
 # The report's case 1 through the whole pipeline: the README's gallery
 # (tests/gallery.bats fails when these files are stale) and the figures.
 # Then the finite-element mesh: balanced, conforming, around the hole.
@@ -128,7 +134,7 @@ SANFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
 	-fno-omit-frame-pointer
 sanitize:
 	$(MAKE) clean
-	QTREE_SANITIZE=1 $(MAKE) CFLAGS="$(SANFLAGS) -Wall -Wextra" \
+	QTREE_SANITIZE=1 QTREE_LONG=all $(MAKE) CFLAGS="$(SANFLAGS) -Wall -Wextra" \
 	    LDFLAGS="$(SANFLAGS)" test
 	$(MAKE) clean
 
@@ -183,6 +189,6 @@ clean:
 	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o
 	rm -f $(POLYREADOBJ) $(QTMESHOBJ) $(QT2SVGOBJ)
 
-.PHONY: all deps testprogs test demo regress mutate bench bench-peers bench-mesh sanitize \
+.PHONY: all deps testprogs test check-long demo regress mutate bench bench-peers bench-mesh sanitize \
 	fuzz install \
 	uninstall clean

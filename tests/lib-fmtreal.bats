@@ -7,7 +7,7 @@ load test_helper
 FMTCHECK="$TOP/tests/check/fmtcheck"
 
 setup() {
-	cd "$BATS_TEST_TMPDIR" || return 1
+	qtree_setup || return 1
 	if [ ! -x "$FMTCHECK" ]; then
 		echo "tests/check/fmtcheck is missing: build it first" >&2
 		return 1

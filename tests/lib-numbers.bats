@@ -8,7 +8,7 @@ load test_helper
 NUMCHECK="$TOP/tests/check/numcheck"
 
 setup() {
-	cd "$BATS_TEST_TMPDIR" || return 1
+	qtree_setup || return 1
 	if [ ! -x "$NUMCHECK" ] || [ ! -x "$TOP/tools/gen/genpow5" ]; then
 		echo "tests/check/numcheck or tools/gen/genpow5 is missing: make test" >&2
 		return 1

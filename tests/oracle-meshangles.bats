@@ -6,7 +6,7 @@
 load test_helper
 
 setup() {
-	cd "$BATS_TEST_TMPDIR" || return 1
+	qtree_setup || return 1
 	command -v python3 >/dev/null || skip "python3 not installed"
 }
 

@@ -5,7 +5,7 @@
 load test_helper
 
 setup() {
-	cd "$BATS_TEST_TMPDIR" || return 1
+	qtree_setup || return 1
 	PY=$(scipy_python) || skip "no python3 with numpy and scipy (Debian python3-scipy)"
 }
 

@@ -10,3 +10,14 @@ load test_helper
 	[ "$status" -eq 0 ]
 	[[ "${lines[-1]}" == "regress: "*" cases, 0 differ" ]]
 }
+
+@test "every line of tests/long.txt names a test of the suite" {
+	n=0
+	while IFS= read -r name; do
+		case $name in '#'*|'') continue ;; esac
+		grep -qF "@test \"$name\" {" "$TOP"/tests/*.bats ||
+			{ echo "no test: $name"; return 1; }
+		n=$((n + 1))
+	done < "$TOP/tests/long.txt"
+	[ "$n" -gt 0 ]
+}

@@ -10,8 +10,22 @@ SHARED="$TOP/../shared/data"
 export TOP PATH FIXTURES SAMPLES SHARED
 export LC_ALL=C
 
-setup() {
+# The slowest tests (tests/long.txt) run with QTREE_LONG=only (make
+# check-long) or all (make sanitize), and are skipped otherwise (make test);
+# then the test works in a scratch directory of its own.  A file with a
+# setup() of its own calls qtree_setup first.
+qtree_setup() {
+	local long=0
+	grep -qxF -- "$BATS_TEST_DESCRIPTION" "$TOP/tests/long.txt" && long=1
+	case ${QTREE_LONG:-}:$long in
+	only:0)	skip "not long: make test runs it" ;;
+	:1)	skip "long: make check-long runs it" ;;
+	esac
 	cd "$BATS_TEST_TMPDIR" || return 1
+}
+
+setup() {
+	qtree_setup
 }
 
 # Skips, visibly, a test that reads ../shared when a clone does not have it.
