@@ -681,7 +681,7 @@ splitpinches(struct cutter *ct, size_t first)
 			addlen(ct, top - from);
 			out += top - from;
 			top = from + 1;
-			/* the walk goes on from the point along this visit's side */
+			/* the walk goes on along this visit's side */
 			rstack[from] = vr[i];
 			continue;
 		}
