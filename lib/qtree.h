@@ -63,6 +63,8 @@ struct point {
 	double	x, y;
 };
 int	 orient2d(double, double, double, double, double, double);
+int	 incircle(double, double, double, double, double, double, double,
+	    double);
 int	 ray_crosses(struct point, struct point, struct point, struct point);
 int	 point_cmp(const void *, const void *);
 int	 ring_contains(const struct point *, size_t, struct point,

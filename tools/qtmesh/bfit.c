@@ -14,6 +14,7 @@
  * then checked against the rings (boundary.c), and with -t small pieces
  * joined (join.c).
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -208,6 +209,117 @@ leafloops(struct mesh *m, const struct leaf *l)
 	}
 }
 
+/* Is the point at pos on line of the index (vertical or not) in it? */
+static int
+inindex(const struct bfit *b, int vertical, double line, double pos)
+{
+	const struct linept *a = vertical ? b->vline : b->hline;
+	size_t first = 0, end = vertical ? b->nvline : b->nhline, mid;
+
+	while (first < end) {
+		mid = first + (end - first) / 2;
+		if (a[mid].line < line || (a[mid].line == line &&
+		    a[mid].pos < pos))
+			first = mid + 1;
+		else
+			end = mid;
+	}
+	return first < (vertical ? b->nvline : b->nhline) &&
+	    a[first].line == line && a[first].pos == pos;
+}
+
+/* Point (x, y) is to be taken as (tx, ty) in every loop. */
+static void
+snapput(struct bfit *b, double x, double y, double tx, double ty)
+{
+	size_t k, at;
+
+	if (2 * (b->nsnap + 1) > b->snapcap) {
+		struct bslot *old = b->snap;
+		size_t oldcap = b->snapcap;
+
+		b->snapcap = oldcap ? 2 * oldcap : 64;
+		b->snap = xcalloc(b->snapcap, sizeof(*b->snap));
+		for (k = 0; k < oldcap; k++)
+			if (old[k].id != 0)
+				b->snap[bslot(b->snap, b->snapcap, old[k].x,
+				    old[k].y)] = old[k];
+		free(old);
+		b->snapto = xreallocarray(b->snapto, b->snapcap,
+		    sizeof(*b->snapto));
+	}
+	at = bslot(b->snap, b->snapcap, x, y);
+	if (b->snap[at].id == 0) {
+		b->snap[at].x = x;
+		b->snap[at].y = y;
+		b->snap[at].id = (uint32_t)++b->nsnap;
+	}
+	b->snapto[b->snap[at].id - 1].x = tx;
+	b->snapto[b->snap[at].id - 1].y = ty;
+}
+
+/* The point a loop takes for (x, y). */
+static struct point
+snapped(const struct bfit *b, double x, double y)
+{
+	struct point p = { x, y };
+	size_t at;
+
+	if (b->nsnap > 0 && b->snap[at = bslot(b->snap, b->snapcap, x,
+	    y)].id != 0)
+		p = b->snapto[b->snap[at].id - 1];
+	return p;
+}
+
+/*
+ * A ring edge that passes a grid corner closer than its crossing of the
+ * grid line can be rounded crosses the line a few ulps from the corner:
+ * two vertices of the mesh that no triangle between them can make good.
+ * Such a crossing is taken to be the corner, in every loop that has it,
+ * which moves the boundary by those few ulps.  A corner is a point of the
+ * index on a vertical and a level line both.
+ */
+static void
+snaplines(struct bfit *b, int vertical)
+{
+	struct linept *a = vertical ? b->vline : b->hline;
+	size_t n = vertical ? b->nvline : b->nhline, i, w;
+
+	for (i = w = 0; i < n; i++) {
+		struct linept *keep, *from, *to;
+		double big;
+
+		if (w == 0 || a[w - 1].line != a[i].line) {
+			a[w++] = a[i];
+			continue;
+		}
+		keep = &a[w - 1];
+		big = fmax(fmax(fabs(keep->pos), fabs(a[i].pos)),
+		    fabs(a[i].line));
+		if (a[i].pos - keep->pos > ldexp(big, -46)) {
+			a[w++] = a[i];
+			continue;
+		}
+		if (inindex(b, !vertical, keep->pos, keep->line))
+			from = &a[i], to = keep;
+		else if (inindex(b, !vertical, a[i].pos, a[i].line))
+			from = keep, to = &a[i];
+		else {
+			a[w++] = a[i];
+			continue;
+		}
+		if (vertical)
+			snapput(b, from->line, from->pos, to->line, to->pos);
+		else
+			snapput(b, from->pos, from->line, to->pos, to->line);
+		*keep = *to;
+	}
+	if (vertical)
+		b->nvline = w;
+	else
+		b->nhline = w;
+}
+
 /*
  * The loops of every kept leaf, checked against the rings, and the index
  * of their points on the cells' sides.
@@ -256,6 +368,8 @@ bfitloops(struct mesh *m)
 	}
 	sortline(b->vline, &b->nvline);
 	sortline(b->hline, &b->nhline);
+	snaplines(b, 1);
+	snaplines(b, 0);
 }
 
 static void
@@ -421,9 +535,14 @@ leafpoly(struct bfit *b, size_t i, const double x[2], const double y[2])
 	    at += b->llen[j++]) {
 		start = b->npoly;
 		for (k = 0; k < b->llen[j]; k++) {
-			struct point p = b->lpts[at + k];
-			struct point q = b->lpts[at + (k + 1) % b->llen[j]];
+			struct point p = snapped(b, b->lpts[at + k].x,
+			    b->lpts[at + k].y);
+			struct point q = snapped(b, b->lpts[at + (k + 1) %
+			    b->llen[j]].x, b->lpts[at + (k + 1) %
+			    b->llen[j]].y);
 
+			if (p.x == q.x && p.y == q.y)
+				continue;	/* a side snapped away */
 			addpoly(b, p.x, p.y, b->lring[at + k]);
 			if (p.x == q.x && (p.x == x[0] || p.x == x[1]))
 				takein(b, 1, p.x, p.y, q.y);
@@ -460,8 +579,10 @@ meshbfit(struct mesh *m, size_t i)
 
 	leafbox(m, l, x, y);
 	leafpoly(b, i, x, y);
-	if (l->class == 'F' && bfittemplate(m, l, x, y))
+	if (l->class == 'F' && bfittemplate(m, l, x, y)) {
+		b->templated[i] = 1;
 		return;
+	}
 	ntri = b->nplen > 0 ? ear_region(b->ear, b->poly, b->plen, b->nplen,
 	    &tri) : 0;
 	if (ntri == (size_t)-1)
@@ -493,11 +614,14 @@ bfitmesh(struct mesh *m)
 	b->ear = ear_new();
 	bfitloops(m);
 	b->elstart = xreallocarray(NULL, m->nleaves + 1, sizeof(*b->elstart));
+	b->templated = xcalloc(m->nleaves + 1, 1);
 	for (i = 0; i < m->nleaves; i++) {
 		b->elstart[i] = m->nelems;
 		meshbfit(m, i);
 	}
 	b->elstart[m->nleaves] = m->nelems;
+	if (m->minangle > 0)
+		refine(m);
 	/* -t changes the elements: their boundary is walked again after */
 	checkboundary(m, m->format != QTREE && !joining);
 	if (joining)
