@@ -209,23 +209,29 @@ leafloops(struct mesh *m, const struct leaf *l)
 	}
 }
 
-/* Is the point at pos on line of the index (vertical or not) in it? */
-static int
-inindex(const struct bfit *b, int vertical, double line, double pos)
+/*
+ * The line of the index (vertical or not) nearest to v, v itself when
+ * there is none.
+ */
+static double
+nearestline(const struct bfit *b, int vertical, double v)
 {
 	const struct linept *a = vertical ? b->vline : b->hline;
-	size_t first = 0, end = vertical ? b->nvline : b->nhline, mid;
+	size_t n = vertical ? b->nvline : b->nhline, first = 0, end = n, mid;
+	double best = v;
 
 	while (first < end) {
 		mid = first + (end - first) / 2;
-		if (a[mid].line < line || (a[mid].line == line &&
-		    a[mid].pos < pos))
+		if (a[mid].line < v)
 			first = mid + 1;
 		else
 			end = mid;
 	}
-	return first < (vertical ? b->nvline : b->nhline) &&
-	    a[first].line == line && a[first].pos == pos;
+	if (first < n)
+		best = a[first].line;
+	if (first > 0 && (first == n || v - a[first - 1].line < best - v))
+		best = a[first - 1].line;
+	return best;
 }
 
 /* Point (x, y) is to be taken as (tx, ty) in every loop. */
@@ -273,51 +279,35 @@ snapped(const struct bfit *b, double x, double y)
 
 /*
  * A ring edge that passes a grid corner closer than its crossing of the
- * grid line can be rounded crosses the line a few ulps from the corner:
- * two vertices of the mesh that no triangle between them can make good.
- * Such a crossing is taken to be the corner, in every loop that has it,
- * which moves the boundary by those few ulps.  A corner is a point of the
- * index on a vertical and a level line both.
+ * grid line can be rounded crosses the line a few ulps from the corner,
+ * and a ring vertex may lie that close to one: vertices of the mesh that
+ * no triangle between them can make good.  Such a point of a grid line is
+ * taken to be the corner, where the nearest line across meets it, in
+ * every loop that has it: the boundary moves by those few ulps.
  */
 static void
 snaplines(struct bfit *b, int vertical)
 {
 	struct linept *a = vertical ? b->vline : b->hline;
-	size_t n = vertical ? b->nvline : b->nhline, i, w;
+	size_t n = vertical ? b->nvline : b->nhline, i;
+	double to, big;
 
-	for (i = w = 0; i < n; i++) {
-		struct linept *keep, *from, *to;
-		double big;
-
-		if (w == 0 || a[w - 1].line != a[i].line) {
-			a[w++] = a[i];
+	for (i = 0; i < n; i++) {
+		to = nearestline(b, !vertical, a[i].pos);
+		big = fmax(fabs(a[i].pos), fabs(a[i].line));
+		if (to == a[i].pos || fabs(to - a[i].pos) > ldexp(big, -46))
 			continue;
-		}
-		keep = &a[w - 1];
-		big = fmax(fmax(fabs(keep->pos), fabs(a[i].pos)),
-		    fabs(a[i].line));
-		if (a[i].pos - keep->pos > ldexp(big, -46)) {
-			a[w++] = a[i];
-			continue;
-		}
-		if (inindex(b, !vertical, keep->pos, keep->line))
-			from = &a[i], to = keep;
-		else if (inindex(b, !vertical, a[i].pos, a[i].line))
-			from = keep, to = &a[i];
-		else {
-			a[w++] = a[i];
-			continue;
-		}
 		if (vertical)
-			snapput(b, from->line, from->pos, to->line, to->pos);
+			snapput(b, a[i].line, a[i].pos, a[i].line, to);
 		else
-			snapput(b, from->pos, from->line, to->pos, to->line);
-		*keep = *to;
+			snapput(b, a[i].pos, a[i].line, to, a[i].line);
+		a[i].pos = to;
 	}
+	sortline(a, &n);
 	if (vertical)
-		b->nvline = w;
+		b->nvline = n;
 	else
-		b->nhline = w;
+		b->nhline = n;
 }
 
 /*
@@ -472,6 +462,9 @@ bfittemplate(struct mesh *m, const struct leaf *l, const double x[2],
 			mask |= 1 << side;
 		else if (at[side + 1] - at[side] != 1)
 			return 0;
+	/* a hanging midpoint's template has arctan 1/2: under -a, the band */
+	if (mask != 0 && m->minangle > TEMPLATE_ANGLE)
+		return 0;
 	for (i = 0; i < m->bymask[mask].nel; i++) {
 		const struct shape *sh = &m->bymask[mask].el[i];
 

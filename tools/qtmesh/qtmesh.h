@@ -14,6 +14,9 @@
 
 enum { QTREE, MSH, VTK, TRIANGLE };	/* -f: main.c's table, in order */
 
+/* The smallest angle of the templates, arctan 1/2, in degrees. */
+#define TEMPLATE_ANGLE	26.565051177077990
+
 /*
  * An element of a template: points of a leaf numbered counter-clockwise
  * from the lower left corner, 0 to 7, corners even and side midpoints odd
