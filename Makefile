@@ -74,7 +74,7 @@ tools/qtbool.o: lib/qtree.h
 # fmtbench times it; numcheck checks parsereal against strtod, numbench
 # times both (tools/bench/benchnum.sh).  genpow5 writes lib/pow5.c, which is
 # committed (tests/lib-numbers.bats compares).  rangecheck checks qtree(5)'s
-# range rule.
+# range rule; predcheck prints incircle's and orient2d's signs.
 tests/check/fmtcheck: tests/check/fmtcheck.c tests/check/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/fmtcheck.c lib/libqtree.a $(LDLIBS)
 tools/bench/fmtbench: tools/bench/fmtbench.c tests/check/splitmix.h lib/libqtree.a
@@ -89,8 +89,12 @@ tools/gen/genpow5: tools/gen/genpow5.c
 tests/check/rangecheck: tests/check/rangecheck.c tests/check/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/rangecheck.c lib/libqtree.a $(LDLIBS)
 
+tests/check/predcheck: tests/check/predcheck.c lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/predcheck.c lib/libqtree.a $(LDLIBS)
+
 # What the suite runs beyond the programs; tests/mutate.sh builds it too.
-testprogs: all tests/check/fmtcheck tests/check/numcheck tools/gen/genpow5 tests/check/rangecheck
+testprogs: all tests/check/fmtcheck tests/check/numcheck tools/gen/genpow5 tests/check/rangecheck \
+	tests/check/predcheck
 
 # What the suite needs from Debian: make deps installs it all; make test
 # stops at once, naming the apt-get line, when bats or mandoc is missing.
@@ -183,7 +187,7 @@ uninstall:
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/check/fmtcheck \
 	    tools/bench/fmtbench tests/check/numcheck tools/bench/numbench tools/gen/genpow5 \
-	    tests/check/rangecheck \
+	    tests/check/rangecheck tests/check/predcheck \
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
 	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o

@@ -117,6 +117,10 @@ addprod4(struct xsum *x, int sign, const double *p, const double *q,
 	int k;
 
 	for (k = 0; k < 16; k++) {
+		/* mostly the low parts are 0: differences that are exact */
+		if (p[k & 1] == 0 || q[k >> 1 & 1] == 0 || r[k >> 2 & 1] == 0 ||
+		    s[k >> 3 & 1] == 0)
+			continue;
 		two_product(sign * p[k & 1], q[k >> 1 & 1], &hi, &lo);
 		xs_addprod3(x, hi, r[k >> 2 & 1], s[k >> 3 & 1]);
 		xs_addprod3(x, lo, r[k >> 2 & 1], s[k >> 3 & 1]);

@@ -43,6 +43,13 @@ struct rtri {
 	uint32_t	leaf;	/* the leaf it came from */
 };
 
+/* A kept leaf by its place, for the leaf that holds a point. */
+struct leafkey {
+	uint64_t	ix, iy;
+	int		level;
+	int32_t		leaf;	/* -1: free */
+};
+
 struct todo {			/* a triangle to look at, as it was then */
 	uint32_t	t, v[3];
 };
@@ -52,7 +59,9 @@ struct refiner {
 	struct rtri	*t;
 	size_t		 nt, tcap;
 	struct sidemap	 open;	/* boundary side a -> b: 3t + k + 1 */
-	struct sidemap	 fixed;	/* a templated element's side: leaf + 1 */
+	struct leafkey	*leaftab;	/* the kept leaves by place */
+	size_t		 leafcap;
+	int		 maxlevel;
 	struct sidemap	 frozen;	/* sides that cannot be split */
 	unsigned char	*inband;	/* leaf i meshed here */
 	uint32_t	*apex;	/* vertex i + 1: the ring vertex of its shell */
@@ -69,6 +78,9 @@ struct refiner {
 	double		 cosbound;	/* cos of the smallest angle allowed */
 	size_t		 budget;	/* vertices it may still add */
 };
+
+static int32_t	leafat(const struct mesh *, const struct leafkey *, size_t,
+		    int, double, double);
 
 static const struct point *
 pt(const struct refiner *r, uint32_t v)
@@ -230,11 +242,32 @@ smallest(const struct refiner *r, const struct rtri *t, double *cosine)
  * it, it is the skinny triangle that the rings' small angle leaves
  * (Shewchuk's seditious edge).
  */
+/*
+ * The templated leaf across the band's boundary side a -> b, as its
+ * number + 1, or 0: the leaf that holds a point a quarter of the side's
+ * length to its right.  The side is part of a leaf's side, no longer than
+ * the leaves on either side of it.
+ */
+static uint32_t
+fixedacross(const struct refiner *r, uint32_t a, uint32_t b)
+{
+	const struct point *p = pt(r, a), *q = pt(r, b);
+	double x = (p->x + q->x) / 2 + (q->y - p->y) / 4;
+	double y = (p->y + q->y) / 2 - (q->x - p->x) / 4;
+	int32_t l;
+
+	if (p->x != q->x && p->y != q->y)
+		return 0;	/* not along a grid line: a ring's */
+	l = leafat(r->m, r->leaftab, r->leafcap, r->maxlevel, x, y);
+	return l >= 0 && r->m->b.templated[l] && !r->inband[l] ?
+	    (uint32_t)l + 1 : 0;
+}
+
 static int
 ringside(const struct refiner *r, const struct rtri *t, int k)
 {
-	return t->n[k] < 0 && sideget(&r->fixed, t->v[(k + 2) % 3],
-	    t->v[(k + 1) % 3]) == 0;
+	return t->n[k] < 0 && fixedacross(r, t->v[(k + 1) % 3],
+	    t->v[(k + 2) % 3]) == 0;
 }
 
 static int
@@ -368,17 +401,13 @@ pullin(struct refiner *r, uint32_t l)
 {
 	const struct bfit *b = &r->m->b;
 	size_t e;
-	int k, n;
 
 	r->inband[l] = 1;
 	for (e = b->elstart[l]; e < b->elstart[l + 1]; e++) {
 		const uint32_t *v = r->m->elems[e].v;
 
-		n = nverts(&r->m->elems[e]);
-		for (k = 0; k < n; k++)
-			sideput(&r->fixed, v[k], v[(k + 1) % n], 0);
 		addtri(r, l, v[0], v[1], v[2]);
-		if (n == 4)
+		if (nverts(&r->m->elems[e]) == 4)
 			addtri(r, l, v[0], v[2], v[3]);
 	}
 	r->budget = r->budget > 0 ? r->budget - 1 : 0;
@@ -432,7 +461,7 @@ splitside(struct refiner *r, uint32_t a, uint32_t b)
 		return 0;
 	t = (code - 1) / 3;
 	k = (code - 1) % 3;
-	if ((l = sideget(&r->fixed, b, a)) != 0) {
+	if ((l = fixedacross(r, a, b)) != 0) {
 		pullin(r, l - 1);
 		aftermath(r);
 		return 1;
@@ -692,20 +721,10 @@ buildband(struct refiner *r)
 	struct mesh *m = r->m;
 	const struct bfit *b = &m->b;
 	size_t i, e;
-	int k, n;
 
 	for (i = 0; i < m->nleaves; i++) {
-		if (b->templated[i]) {
-			for (e = b->elstart[i]; e < b->elstart[i + 1]; e++) {
-				const uint32_t *v = m->elems[e].v;
-
-				n = nverts(&m->elems[e]);
-				for (k = 0; k < n; k++)
-					sideput(&r->fixed, v[k],
-					    v[(k + 1) % n], (uint32_t)i + 1);
-			}
+		if (b->templated[i])
 			continue;
-		}
 		r->inband[i] = 1;
 		for (e = b->elstart[i]; e < b->elstart[i + 1]; e++) {
 			const uint32_t *v = m->elems[e].v;
@@ -718,15 +737,6 @@ buildband(struct refiner *r)
 	r->ntouched = 0;
 }
 
-/*
- * The leaf that holds a point: the kept leaf whose square holds it at
- * some level, or -1.
- */
-struct leafkey {
-	uint64_t	ix, iy;
-	int		level;
-	int32_t		leaf;	/* -1: free */
-};
 
 static size_t
 leafslot(const struct leafkey *tab, size_t cap, int level, uint64_t ix,
@@ -768,33 +778,41 @@ leafat(const struct mesh *m, const struct leafkey *tab, size_t cap,
  * each triangle of the band in the leaf that holds its centroid (the leaf
  * it came from, when rounding puts the centroid outside every leaf).
  */
+/* The kept leaves by place. */
+static void
+leaftable(struct refiner *r)
+{
+	const struct mesh *m = r->m;
+	size_t i, cap = 16;
+
+	while (cap < 2 * m->nleaves)
+		cap *= 2;
+	r->leaftab = xreallocarray(NULL, cap, sizeof(*r->leaftab));
+	r->leafcap = cap;
+	for (i = 0; i < cap; i++)
+		r->leaftab[i].leaf = -1;
+	for (i = 0; i < m->nleaves; i++) {
+		const struct leaf *l = &m->leaves[i];
+		size_t k = leafslot(r->leaftab, cap, l->level, l->ix, l->iy);
+
+		r->leaftab[k].level = l->level;
+		r->leaftab[k].ix = l->ix;
+		r->leaftab[k].iy = l->iy;
+		r->leaftab[k].leaf = (int32_t)i;
+		if (l->level > r->maxlevel)
+			r->maxlevel = l->level;
+	}
+}
+
 static void
 rewrite(struct refiner *r)
 {
 	struct mesh *m = r->m;
 	struct bfit *b = &m->b;
-	struct leafkey *tab;
 	struct elem *out;
-	size_t *count, i, e, cap = 16, nout = 0, total = 0;
+	size_t *count, i, e, nout = 0, total = 0;
 	int32_t *home;
-	int maxlevel = 0;
 
-	while (cap < 2 * m->nleaves)
-		cap *= 2;
-	tab = xreallocarray(NULL, cap, sizeof(*tab));
-	for (i = 0; i < cap; i++)
-		tab[i].leaf = -1;
-	for (i = 0; i < m->nleaves; i++) {
-		const struct leaf *l = &m->leaves[i];
-		size_t k = leafslot(tab, cap, l->level, l->ix, l->iy);
-
-		tab[k].level = l->level;
-		tab[k].ix = l->ix;
-		tab[k].iy = l->iy;
-		tab[k].leaf = (int32_t)i;
-		if (l->level > maxlevel)
-			maxlevel = l->level;
-	}
 	home = xreallocarray(NULL, r->nt + 1, sizeof(*home));
 	count = xcalloc(m->nleaves + 1, sizeof(*count));
 	for (i = 0; i < r->nt; i++) {
@@ -803,7 +821,8 @@ rewrite(struct refiner *r)
 		    pt(r, t->v[2])->x) / 3;
 		double y = (pt(r, t->v[0])->y + pt(r, t->v[1])->y +
 		    pt(r, t->v[2])->y) / 3;
-		int32_t l = leafat(m, tab, cap, maxlevel, x, y);
+		int32_t l = leafat(m, r->leaftab, r->leafcap, r->maxlevel, x,
+		    y);
 
 		if (l < 0 || !r->inband[l])
 			l = (int32_t)t->leaf;
@@ -838,7 +857,6 @@ rewrite(struct refiner *r)
 	m->elemcap = total + 1;
 	free(home);
 	free(count);
-	free(tab);
 }
 
 /* The bad triangles of -b refined away; the elements rewritten. */
@@ -853,6 +871,7 @@ refine(struct mesh *m)
 	r.m = m;
 	r.cosbound = cos(m->minangle * (3.14159265358979323846 / 180));
 	r.inband = xcalloc(m->nleaves + 1, 1);
+	leaftable(&r);
 	vertexroom(&r, (uint32_t)b->nbv);
 	for (rk = at = 0; rk < b->nrlen; at += b->rlen[rk++])
 		for (k = 0; k < b->rlen[rk]; k++) {
@@ -892,7 +911,7 @@ refine(struct mesh *m)
 	rewrite(&r);
 	free(r.t);
 	free(r.open.slot);
-	free(r.fixed.slot);
+	free(r.leaftab);
 	free(r.frozen.slot);
 	free(r.inband);
 	free(r.apex);

@@ -1,0 +1,54 @@
+#!/usr/bin/env bats
+# lib/geom.c's exact predicates, incircle and orient2d, against exact
+# rationals (Python's fractions): random points, points rounded from
+# circles (the floating filter cannot decide them), and points of small
+# grids at several scales (exactly cocircular and collinear ones).
+# tests/check/predcheck is built by make, not here.
+
+load test_helper
+
+@test "incircle and orient2d agree with exact rationals, ties and near ties included" {
+	python3 - "$TOP/tests/check/predcheck" <<-'PY'
+	import math, random, subprocess, sys
+	from fractions import Fraction as F
+	def incircle(p):
+	    ax, ay, bx, by, cx, cy, dx, dy = map(F, p)
+	    adx, ady, bdx, bdy = ax - dx, ay - dy, bx - dx, by - dy
+	    cdx, cdy = cx - dx, cy - dy
+	    d = ((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+	         (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+	         (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady))
+	    return (d > 0) - (d < 0)
+	def orient(p):
+	    ax, ay, bx, by, cx, cy = map(F, p[:6])
+	    d = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+	    return (d > 0) - (d < 0)
+	random.seed(7)
+	cases = []
+	for i in range(6000):
+	    k = i % 3
+	    if k == 0:
+	        p = [random.uniform(-1, 1) for _ in range(8)]
+	    elif k == 1:
+	        x0, y0 = random.uniform(-10, 10), random.uniform(-10, 10)
+	        r = random.uniform(1e-3, 10)
+	        p = []
+	        for j in range(4):
+	            t = random.uniform(0, 2 * math.pi)
+	            p += [x0 + r * math.cos(t), y0 + r * math.sin(t)]
+	    else:
+	        s = random.choice([1, 1e-9, 3.7e20, 0.1])
+	        o = random.choice([0, 1e5, 0.1])
+	        p = [random.randint(-3, 3) * s + o for _ in range(8)]
+	    cases.append(p)
+	inp = "\n".join(" ".join(repr(x) for x in c) for c in cases) + "\n"
+	out = subprocess.run([sys.argv[1]], input=inp, capture_output=True,
+	    text=True, check=True).stdout.split("\n")
+	bad = [c for c, o in zip(cases, out)
+	    if o != "%d %d" % (incircle(c), orient(c))]
+	ties = sum(1 for c in cases if incircle(c) == 0)
+	print("cases", len(cases), "ties", ties, "wrong", len(bad))
+	if bad or ties < 20:
+	    sys.exit(1)
+	PY
+}
