@@ -17,7 +17,7 @@
 # about qtree's: from the region's area, then corrected once.  The
 # triangles Gmsh writes are turned counter-clockwise when they are not.
 set -u
-cd "$(dirname "$0")/.." || exit 2
+cd "$(dirname "$0")/../.." || exit 2
 top=$(pwd)
 PATH="$top:$PATH"
 LC_ALL=C

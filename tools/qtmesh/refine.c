@@ -13,10 +13,11 @@
  * sides are of two kinds.  A piece of a ring is split at its midpoint, or,
  * when one end is a ring's vertex, at a power of two from it (concentric
  * shells), so that two rings' edges meeting at a small angle are split at
- * equal distances and the skinny triangle between them is left alone, as
- * it must be.  A side shared with a templated leaf cannot be split without
- * breaking that leaf's elements: the leaf joins the band instead, its
- * elements cut into triangles.  Every predicate is exact (orient2d,
+ * equal distances; the triangle in the rings' angle keeps that angle.  A
+ * side shared with a templated leaf cannot be split without breaking that
+ * leaf's elements: the leaf joins the band instead, its elements cut into
+ * triangles.  A budget of new vertices (20 for each triangle of the band
+ * at the start) bounds the work where rounding stops the refinement.  Every predicate is exact (orient2d,
  * incircle); the points made, circumcentres and midpoints, are rounded
  * to doubles, and a point that would not keep every triangle positive is
  * not made.  Angles are measured in floating point, as a user measures
@@ -64,7 +65,6 @@ struct refiner {
 	int		 maxlevel;
 	struct sidemap	 frozen;	/* sides that cannot be split */
 	unsigned char	*inband;	/* leaf i meshed here */
-	uint32_t	*apex;	/* vertex i + 1: the ring vertex of its shell */
 	unsigned char	*input;	/* vertex i + 1 is a ring's vertex */
 	size_t		 nvcap;
 	struct todo	*bad;	/* triangles to test */
@@ -154,9 +154,7 @@ vertexroom(struct refiner *r, uint32_t v)
 
 	if (v <= old)
 		return;
-	r->apex = xgrow(r->apex, &r->nvcap, v, sizeof(*r->apex));
-	r->input = xreallocarray(r->input, r->nvcap, 1);
-	memset(r->apex + old, 0, (r->nvcap - old) * sizeof(*r->apex));
+	r->input = xgrow(r->input, &r->nvcap, v, 1);
 	memset(r->input + old, 0, r->nvcap - old);
 }
 
@@ -236,13 +234,6 @@ smallest(const struct refiner *r, const struct rtri *t, double *cosine)
 }
 
 /*
- * Is the triangle's small angle one the bound excuses?  At a ring vertex
- * between two of the band's boundary sides it is the rings' own angle;
- * across from two shell points of one ring vertex at one distance from
- * it, it is the skinny triangle that the rings' small angle leaves
- * (Shewchuk's seditious edge).
- */
-/*
  * The templated leaf across the band's boundary side a -> b, as its
  * number + 1, or 0: the leaf that holds a point a quarter of the side's
  * length to its right.  The side is part of a leaf's side, no longer than
@@ -270,25 +261,15 @@ ringside(const struct refiner *r, const struct rtri *t, int k)
 	    t->v[(k + 2) % 3]) == 0;
 }
 
+/*
+ * Is the triangle's small angle one the bound excuses: at a ring vertex,
+ * between two of the band's boundary sides along rings, the rings' own?
+ */
 static int
 excused(const struct refiner *r, const struct rtri *t, int s)
 {
-	uint32_t p = t->v[s], a = t->v[(s + 1) % 3], b = t->v[(s + 2) % 3];
-	const struct point *o;
-	double da, db;
-
-	if (r->input[p - 1] && ringside(r, t, (s + 1) % 3) &&
-	    ringside(r, t, (s + 2) % 3))
-		return 1;
-	if (r->apex[a - 1] == 0 || r->apex[a - 1] != r->apex[b - 1])
-		return 0;
-	o = pt(r, r->apex[a - 1]);
-	da = dist2(pt(r, a), o);
-	db = dist2(pt(r, b), o);
-	/* and the rings' angle there under 60 degrees: cos over 1/2 */
-	return fabs(da - db) <= 1e-6 * (da + db) && 2 * ((pt(r, a)->x -
-	    o->x) * (pt(r, b)->x - o->x) + (pt(r, a)->y - o->y) *
-	    (pt(r, b)->y - o->y)) > sqrt(da * db);
+	return r->input[t->v[s] - 1] && ringside(r, t, (s + 1) % 3) &&
+	    ringside(r, t, (s + 2) % 3);
 }
 
 static int
@@ -416,20 +397,17 @@ pullin(struct refiner *r, uint32_t l)
 /* Where to split the ring's piece a-b: at a power of two from a ring vertex. */
 static void
 splitpoint(const struct refiner *r, uint32_t a, uint32_t b, double *x,
-    double *y, uint32_t *apex)
+    double *y)
 {
 	const struct point *pa = pt(r, a), *pb = pt(r, b);
 	double len, d, f;
 
-	*apex = 0;
 	if (r->input[a - 1] != r->input[b - 1]) {
 		if (r->input[b - 1]) {
 			const struct point *s = pa;
 
 			pa = pb, pb = s;
-			*apex = b;
-		} else
-			*apex = a;
+		}
 		len = sqrt(dist2(pa, pb));
 		d = exp2(round(log2(len / 2)));
 		f = d / len;
@@ -439,8 +417,6 @@ splitpoint(const struct refiner *r, uint32_t a, uint32_t b, double *x,
 	}
 	*x = pa->x / 2 + pb->x / 2;
 	*y = pa->y / 2 + pb->y / 2;
-	if (r->apex[a - 1] != 0 && r->apex[a - 1] == r->apex[b - 1])
-		*apex = r->apex[a - 1];
 }
 
 /*
@@ -451,7 +427,7 @@ static int
 splitside(struct refiner *r, uint32_t a, uint32_t b)
 {
 	struct mesh *m = r->m;
-	uint32_t code = sideget(&r->open, a, b), t, k, p, mid, apex, ring, l;
+	uint32_t code = sideget(&r->open, a, b), t, k, p, mid, ring, l;
 	int32_t na, nb;
 	uint32_t v[3], u;
 	int32_t n[3];
@@ -469,14 +445,13 @@ splitside(struct refiner *r, uint32_t a, uint32_t b)
 	if ((ring = sidering(m, a, b)) == 0 || r->budget == 0)
 		goto frozen;
 	p = r->t[t].v[k];
-	splitpoint(r, a, b, &x, &y, &apex);
+	splitpoint(r, a, b, &x, &y);
 	if (bvfind(&m->b, x, y) != 0 || orient2d(pt(r, p)->x, pt(r, p)->y,
 	    pt(r, a)->x, pt(r, a)->y, x, y) <= 0 || orient2d(pt(r, p)->x,
 	    pt(r, p)->y, x, y, pt(r, b)->x, pt(r, b)->y) <= 0)
 		goto frozen;
 	mid = newvertex(r, x, y);
 	r->budget--;
-	r->apex[mid - 1] = apex;
 	sideput(&r->open, a, b, 0);
 	sideput(&m->b.ringsides, a, mid, ring);
 	sideput(&m->b.ringsides, mid, b, ring);
@@ -914,7 +889,6 @@ refine(struct mesh *m)
 	free(r.leaftab);
 	free(r.frozen.slot);
 	free(r.inband);
-	free(r.apex);
 	free(r.input);
 	free(r.bad);
 	free(r.enc);
