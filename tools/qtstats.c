@@ -1579,16 +1579,16 @@ claimpath(const struct claim *c)
  * partials have the same root, unless one of them is that node alone.
  */
 static void
-mergejoin(void)
+mergejoin(const char *name)
 {
 	struct claim *r, *d, *e;
 	struct levelstat *s;
 	size_t i, j;
 
 	if (mg.partials == 0)
-		errat("stdin", 0, "no output of qtstats -s to merge");
+		errat(name, 0, "no output of qtstats -s to merge");
 	if (!havesums && poly.nrings > 0 && poly.nobjects == 0)
-		errat("stdin", 0, "no input holds the region's sums, which the "
+		errat(name, 0, "no input holds the region's sums, which the "
 		    "tree's root carries: merge qtstats -s of the top too");
 	if (mg.nroots > 1)
 		qsort(mg.roots, mg.nroots, sizeof(*mg.roots), claimcmp);
@@ -1667,7 +1667,8 @@ main(int argc, char *argv[])
 	if (merged) {
 		for (i = 0; i < argc || (argc == 0 && i == 0); i++)
 			mergeinput(argc > 0 ? argv[i] : "-");
-		mergejoin();
+		mergejoin(argc > 0 && strcmp(argv[0], "-") != 0 ? argv[0] :
+		    "stdin");
 		report(table);
 		closeout();
 		return 0;
