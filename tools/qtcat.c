@@ -35,7 +35,7 @@
 /* A shard to copy whole: its cells' bytes, its first and last cells. */
 struct block {
 	int		 fd;
-	off_t		 from, to;	/* the cells, first to last, whole lines */
+	off_t		 from, to;	/* the cells' lines, first to last */
 	size_t		 firstlen;	/* the first cell's line */
 	unsigned long long ncells;	/* as its end record counts them */
 	char		 firstpath[QT_MAXLEVEL + 1], lastpath[QT_MAXLEVEL + 1];
@@ -712,10 +712,10 @@ putblock(struct input *p)
 		qt_copy(chunk, n, 0);
 	}
 	if (lines != want)
-		errat(p->name, headlines + 1 + (long)b->ncells, "its end record "
-		    "counts %llu cells, the lines between its head and it are "
-		    "%llu: a shard copied whole must be one whole stream "
-		    "(qtcat -c reads every cell)", b->ncells,
+		errat(p->name, headlines + 1 + (long)b->ncells,
+		    "its end record counts %llu cells, the lines between its "
+		    "head and it are %llu: a shard copied whole must be one "
+		    "whole stream (qtcat -c reads every cell)", b->ncells,
 		    lines + (b->ncells - want));
 	qt_copy("", 0, lines);
 	memcpy(last.path, b->lastpath, b->last.level);
@@ -915,8 +915,8 @@ main(int argc, char *argv[])
 		if (strcmp(argv[i], "-") == 0 && nstdin++ > 0)
 			die(2, "the standard input (-) named twice");
 		in[i].path = argv[i];
-		if (i > 0 && headname != NULL && headtext == NULL && !unsealed &&
-		    !checkall)
+		if (i > 0 && headname != NULL && headtext == NULL &&
+		    !unsealed && !checkall)
 			headbytes();
 		if (headtext != NULL && probe(&in[i], argv[i])) {
 			in[i].name = argv[i];

@@ -1286,7 +1286,8 @@ getnodeat(struct claim *c, char **f, int nf, int withclass,
 	if (nf != 4 + withclass || getu64(f[1], &lv) < 0 ||
 	    lv > QT_MAXLEVEL || (lv == 0 ? strcmp(f[0], ".") != 0 :
 	    strlen(f[0]) != (size_t)lv) ||
-	    (withclass && strchr("NFEP", f[4][0]) == NULL) ||
+	    (withclass && (strchr("NFEP", f[4][0]) == NULL ||
+	    f[4][1] != '\0')) ||
 	    getu64(f[2], &n->ix) < 0 || getu64(f[3], &n->iy) < 0 ||
 	    pathcell(f[0], (int)lv, &ix, &iy) < 0 ||
 	    ix != n->ix || iy != n->iy)
