@@ -161,6 +161,17 @@ bench: all tools/bench/numbench
 bench-peers: all
 	sh tools/bench/benchpeers.sh
 
+# Shards against one run: parallel -k | qtcat, shard files and one qtcat,
+# the figures by qtstats -s and -m, at -j 1 and -j 2, cut at levels 2 and
+# 1, the CPU by stage; level 22 reduced to figures; saved as
+# tools/bench/results/shards.txt (tools/bench/benchshards.sh).
+bench-shards: all
+	{ BENCH_SHARDCUT=2 BENCH_SHARDDEEP=22 sh tools/bench/benchshards.sh && \
+	    BENCH_SHARDCUT=1 sh tools/bench/benchshards.sh; } \
+	    > tools/bench/results/shards.txt.new && \
+	    mv tools/bench/results/shards.txt.new tools/bench/results/shards.txt && \
+	    cat tools/bench/results/shards.txt
+
 # qtree's boundary-fitted mesh against Gmsh's: elements, angles, P1 error,
 # time and memory, one table, saved as tools/bench/results/mesh.txt.
 bench-mesh: all
@@ -193,6 +204,7 @@ clean:
 	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o
 	rm -f $(POLYREADOBJ) $(QTMESHOBJ) $(QT2SVGOBJ)
 
-.PHONY: all deps testprogs test check-long demo regress mutate bench bench-peers bench-mesh sanitize \
+.PHONY: all deps testprogs test check-long demo regress mutate bench bench-peers bench-mesh \
+	bench-shards sanitize \
 	fuzz install \
 	uninstall clean

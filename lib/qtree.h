@@ -384,6 +384,7 @@ void	 qt_hang(unsigned long long, unsigned long long, unsigned long long);
 void	 qt_object(long);
 void	 qt_op(const struct qtop *);
 void	 qt_echo(const struct qtrec *);
+void	 qt_copy(const char *, size_t, unsigned long long);
 struct qtrec *qt_keep(const struct qtrec *);
 void	 qt_free(struct qtrec *);
 unsigned long long qt_bytes(void);

@@ -489,6 +489,14 @@ qt_echo(const struct qtrec *rec)
 	w.written += rec->nrec;
 }
 
+/* Bytes of nrec whole records, written as they are (qtcat's shards). */
+void
+qt_copy(const char *s, size_t len, unsigned long long nrec)
+{
+	put(s, len);
+	w.written += nrec;
+}
+
 /* A copy of a record for qt_echo later: its text and its count. */
 struct qtrec *
 qt_keep(const struct qtrec *rec)

@@ -333,15 +333,17 @@ qtree 1'; echo 'end 0'; } > cut.txt
 	run -1 --separate-stderr bash -c 'qtleaves -n "$1" | qtcat -u' _ "$w"
 	[[ "$stderr" == "qtcat: stdin:"*": the input holds a mesh (vertex record): qtcat joins trees" ]]
 	run -2 --separate-stderr qtcat -x
-	[ "${stderr_lines[-1]}" = "usage: qtcat [-hu] [file ...]" ]
+	[ "${stderr_lines[-1]}" = "usage: qtcat [-chu] [file ...]" ]
 	run -2 --separate-stderr qtcat - - < "$w"
 }
 
 @test "qtcat(1): the examples print what the page says" {
+	command -v parallel >/dev/null 2>&1 ||
+		skip "GNU parallel is absent (Debian package parallel)"
 	cp "$SAMPLES/amoeba.brep" .
 	script=$(sed -n '/^\.Sh EXAMPLES/,/^\.Sh SEE ALSO/p' "$TOP/man/qtcat.1" |
 	    awk '/^\.Bd/ { on = 1; next } /^\.Ed/ { on = 0 } on' |
-	    sed 's/samples\/amoeba.brep/amoeba.brep/')
+	    sed 's/samples\/amoeba.brep/amoeba.brep/; s/parallel /parallel --will-cite /')
 	# the page's commands, $ lines and their continuations, run in order
 	cmds=$(echo "$script" | awk '/^\$ / { sub(/^\$ /, ""); print; next }
 	    /^    / { sub(/^    /, ""); print }')
@@ -350,7 +352,7 @@ qtree 1'; echo 'end 0'; } > cut.txt
 	run -0 --separate-stderr bash -c "$cmds"
 	got=$(printf '%s\n%s\n' "$output" "$stderr" | grep -v '^$')
 	diff -u <(echo "$want" | sort) <(echo "$got" | sort)
-	[ "$(echo "$want" | grep -c '^same$')" -eq 3 ]
+	[ "$(echo "$want" | grep -c '^same$')" -eq 4 ]
 }
 
 # A node given again after the leaf of the same cell is not the node that
@@ -366,4 +368,94 @@ qtree 1'; echo 'end 0'; } > cut.txt
 		run -1 --separate-stderr qtcat $u a.qt b.qt
 		[ "$stderr" = "qtcat: b.qt:$m: cell 0 given twice: also at a.qt:$n" ]
 	done
+}
+
+# Shards in files are copied whole: what is checked and what is trusted.
+# tamper FILE AWK: FILE rewritten by the awk program, in place.
+tamper() {
+	awk "$2" "$1" > t.tmp && mv t.tmp "$1"
+}
+
+# The line of a leaf in the middle of file $1.
+midleaf() {
+	awk '$1 == "leaf" { n[++k] = NR } END { print n[int(k / 2)] }' "$1"
+}
+
+@test "-c, every cell read, and the copy of shard files give the same bytes" {
+	d=$BATS_FILE_TMPDIR
+	for t in amoeba tri; do
+		for k in 1 2; do
+			qtcat -c $d/$t-topfe-$k.qt $d/$t-P-$k/*.qt | cmp - "$(whole $t)"
+			qtcat -c $d/$t-topn-$k.qt $d/$t-P-$k/*.qt | cmp - "$(whole $t)"
+			qtcat $d/$t-topn-$k.qt $d/$t-P-$k/*.qt | cmp - "$(whole $t)"
+		done
+	done
+}
+
+@test "a corner changed in a shard's middle leaf is copied as it is; -c refuses it" {
+	d=$BATS_FILE_TMPDIR
+	cp $d/amoeba-P-2/*.qt .
+	n=$(midleaf 12.qt)
+	tamper 12.qt "NR == $n { \$6 = \"99\" } 1"
+	run -0 --separate-stderr qtcat $d/amoeba-topfe-2.qt ??.qt
+	# the one line changed, nothing else: the copy trusts the cells between
+	[ "$(printf '%s\n' "$output" | diff - "$(whole amoeba)" | grep -c '^[<>]')" -eq 2 ]
+	run -1 --separate-stderr qtcat -c $d/amoeba-topfe-2.qt ??.qt
+	[[ $stderr == "qtcat: 12.qt:$n: "* ]]
+}
+
+@test "a line taken from a shard's middle is refused by its end count, no end record written" {
+	d=$BATS_FILE_TMPDIR
+	cp $d/amoeba-P-2/*.qt .
+	n=$(midleaf 21.qt)
+	cells=$(grep -cE '^(node|leaf) ' 21.qt)
+	end=$(awk '$1 == "end" { print NR }' 21.qt)
+	tamper 21.qt "NR != $n"
+	run -1 --separate-stderr qtcat $d/amoeba-topfe-2.qt ??.qt
+	[ "$stderr" = "qtcat: 21.qt:$end: its end record counts $cells cells, the lines between its head and it are $((cells - 1)): a shard copied whole must be one whole stream (qtcat -c reads every cell)" ]
+	[[ ${lines[-1]} != end* ]]
+}
+
+@test "a line taken from a shard's middle, its end count lowered to match, is not caught; -c catches it" {
+	d=$BATS_FILE_TMPDIR
+	cp $d/amoeba-P-2/*.qt .
+	n=$(midleaf 21.qt)
+	tamper 21.qt "NR == $n { next } \$1 == \"end\" { \$2 = \$2 - 1 } 1"
+	run -0 qtcat $d/amoeba-topfe-2.qt ??.qt
+	[ "$(printf '%s\n' "$output" | wc -l)" -eq "$(($(wc -l < "$(whole amoeba)") - 1))" ]
+	run -1 --separate-stderr qtcat -c $d/amoeba-topfe-2.qt ??.qt
+	[[ $stderr == "qtcat: 21.qt:$n: cell "*" is missing: "* ]]
+}
+
+@test "a shard whose head has a comment, or two shards in one file, are read cell by cell" {
+	d=$BATS_FILE_TMPDIR
+	cp $d/amoeba-P-2/*.qt .
+	tamper 12.qt 'NR == 2 { print "# a comment" } 1'
+	qtcat $d/amoeba-topfe-2.qt ??.qt | cmp - "$(whole amoeba)"
+	cat 30.qt 31.qt > both.qt
+	rm 30.qt 31.qt
+	qtcat $d/amoeba-topfe-2.qt ??.qt both.qt | cmp - "$(whole amoeba)"
+}
+
+@test "nodes of another input inside a shard: the shard is read cell by cell, joined as before" {
+	d=$BATS_FILE_TMPDIR
+	awk '$1 == "node" && $3 == 3' "$(whole amoeba)" > nodes3
+	{ awk '$1 == "node" || $1 == "leaf" { exit } 1' "$(whole amoeba)"
+	  cat nodes3; } | qtcat -u > extra.qt
+	[ "$(grep -c '^node .* 3 ' extra.qt)" -eq 42 ]
+	qtcat $d/amoeba-topfe-2.qt extra.qt $d/amoeba-P-2/*.qt | cmp - "$(whole amoeba)"
+}
+
+@test "a shard that is not one subtree ends where another input's cells are: refused as before" {
+	d=$BATS_FILE_TMPDIR
+	cp $d/amoeba-P-2/*.qt .
+	# 13's cells appended to 12's: not the leaf 1333... last, read by the reader
+	grep -E '^(node|leaf) ' 13.qt > cells
+	tamper 12.qt '$1 == "end" { exit } 1'
+	{ cat cells; echo "end $(($(grep -c . 12.qt) - 1 + $(wc -l < cells)))"; } >> 12.qt
+	run -1 --separate-stderr qtcat -c $d/amoeba-topfe-2.qt ??.qt
+	[[ $stderr == "qtcat: 13.qt:"*": cell 13"*" given twice: also at 12.qt:"* ]]
+	want=$stderr
+	run -1 --separate-stderr qtcat $d/amoeba-topfe-2.qt ??.qt
+	[ "$stderr" = "$want" ]
 }

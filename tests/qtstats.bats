@@ -675,7 +675,7 @@ near() {
 	[[ "$stderr" == "qtstats: cut.qt:"*": truncated stream: no end record" ]]
 	[ -z "$output" ]
 	run -2 --separate-stderr qtstats -x
-	[ "${stderr##*$'\n'}" = "usage: qtstats [-hlv] [file]" ]
+	[ "${stderr##*$'\n'}" = "usage: qtstats [-hlmsv] [file ...]" ]
 }
 
 @test "qtstats(1): the examples print what the page says" {

@@ -191,3 +191,21 @@ teardown() {
 	bash streams.sh
 	cmp tree.qt whole.qt
 }
+
+@test "qtstats(1): the map-reduce over ssh, each shard's sums made there, merged here" {
+	need_parallel
+	start_sshd
+	polyread "$SAMPLES/amoeba.brep" > p.qt
+	qtsplit -l 8 p.qt | qtstats | grep -v '^max_level_jump ' > want.txt
+	qtsplit -l 8 -t 1 p.qt | qtstats -s > top.sums
+	echo 2/qtree-test > hosts
+	ssh="--ssh 'ssh -F $BATS_TEST_TMPDIR/ssh/ssh.cfg' --env PATH"
+	ssh="$ssh --wd '$BATS_TEST_TMPDIR/remote'"
+	example "$TOP/man/qtstats.1" 'figures.txt' | commands |
+	    sed "s/-l 16/-l 8/g; s/-s 3/-s 1/; s|parallel |parallel --will-cite $ssh |" \
+	    > recipe.sh
+	[ "$(wc -l < recipe.sh)" -eq 4 ]
+	bash recipe.sh
+	cmp figures.txt want.txt
+	[ ! -e "$BATS_TEST_TMPDIR/remote/p.qt" ]
+}

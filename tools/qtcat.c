@@ -13,7 +13,17 @@
  * one that preorder puts after the last.  With -u the cells are held,
  * sorted and written: any order, any subset.  Either way a cell comes once,
  * except a node, which shards may share.
+ *
+ * A shard in a file is copied whole, not read cell by cell: when its head
+ * is the first input's byte for byte and its first and last cells say it
+ * is one whole subtree, its cells go out as its bytes, in large reads, at
+ * the place of its first cell, unless another input has a cell among
+ * them; the lines copied must be the cells its end record counts.
  */
+#include <sys/stat.h>
+
+#include <errno.h>
+#include <fcntl.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,12 +32,24 @@
 
 #include "qtree.h"
 
+/* A shard to copy whole: its cells' bytes, its first and last cells. */
+struct block {
+	int		 fd;
+	off_t		 from, to;	/* the cells' lines, first to last */
+	size_t		 firstlen;	/* the first cell's line */
+	unsigned long long ncells;	/* as its end record counts them */
+	char		 firstpath[QT_MAXLEVEL + 1], lastpath[QT_MAXLEVEL + 1];
+	struct cell	 last;
+};
+
 struct input {
 	const char	*name;
+	const char	*path;	/* the operand */
 	struct qtreader	*r;
 	struct qtrec	 rec;	/* the current cell */
 	int		 done;
 	long		 lineno;	/* of the cell before it */
+	struct block	*b;	/* not NULL: copied whole */
 };
 
 /* A cell held under -u: what qt_cell needs, and where it was read. */
@@ -42,7 +64,16 @@ struct heldcell {
 };
 
 static struct input *in;
-static int nin, unsealed;
+static int nin, unsealed, checkall;
+
+/* The first head as its bytes, the qtree line first, and its records. */
+static char *headtext;
+static size_t headlen;
+static unsigned long long headrecs;
+static long headlines;
+
+#define CHUNK	(1 << 20)	/* a read of a shard copied whole */
+static char *chunk;
 
 /* The first head read, to compare and write, and its input's name. */
 static struct qtrec **head;
@@ -66,7 +97,7 @@ static size_t nheld, heldcap;
 static void
 usage(int help)
 {
-	usageexit(help, "usage: qtcat [-hu] [file ...]\n");
+	usageexit(help, "usage: qtcat [-chu] [file ...]\n");
 }
 
 static const char *
@@ -396,6 +427,310 @@ putcell(const struct cell *c, const char *name, long lineno)
 	last.have = 1;
 }
 
+/* The first head's bytes, as qtcat writes it, to compare shards with. */
+static void
+headbytes(void)
+{
+	size_t j;
+
+	headlen = 8;
+	for (j = 0; j < nhead; j++)
+		headlen += head[j]->len + 1;
+	headtext = xmalloc(headlen);
+	memcpy(headtext, "qtree 1\n", 8);
+	headlen = 8;
+	headlines = 1;
+	for (j = 0; j < nhead; j++) {
+		memcpy(headtext + headlen, head[j]->line, head[j]->len);
+		headlen += head[j]->len;
+		headtext[headlen++] = '\n';
+		headrecs += head[j]->nrec;
+		headlines += (long)head[j]->nrec;
+	}
+}
+
+/* n bytes at off, all of them, or -1. */
+static ssize_t
+readat(int fd, char *buf, size_t n, off_t off)
+{
+	size_t got = 0;
+	ssize_t k;
+
+	while (got < n) {
+		if ((k = pread(fd, buf + got, n - got, off + (off_t)got)) < 0) {
+			if (errno == EINTR)
+				continue;
+			return -1;
+		}
+		if (k == 0)
+			break;
+		got += (size_t)k;
+	}
+	return (ssize_t)got;
+}
+
+/* An unsigned decimal of at most 18 digits from s to end, or -1. */
+static long long
+decimal(const char *s, const char *end)
+{
+	long long v = 0;
+
+	if (s == end || end - s > 18 || (*s == '0' && end - s > 1))
+		return -1;
+	for (; s < end; s++) {
+		if (*s < '0' || *s > '9')
+			return -1;
+		v = 10 * v + (*s - '0');
+	}
+	return v;
+}
+
+/*
+ * The cell of line s (n bytes, its newline excluded), for the merge's
+ * order and checks: "node PATH LEVEL IX IY X Y SIZE" or "leaf ... CLASS",
+ * the path, level, column and row agreeing; its corner and size, like
+ * every cell between, are copied as they are.  Returns -1 for anything
+ * else, which the reader then reads.
+ */
+static int
+blockcell(const char *s, size_t n, struct cell *c, char *path)
+{
+	const char *f[10], *e = s + n, *p = s;
+	long long level, ix, iy;
+	uint64_t px, py;
+	int nf = 0;
+
+	while (p < e && nf < 10) {
+		f[nf++] = p;
+		while (p < e && *p != ' ')
+			p++;
+		if (p < e)
+			p++;
+	}
+	if (p != e || s[n - 1] == ' ')
+		return -1;
+	if (nf == 8 && memcmp(s, "node ", 5) == 0)
+		c->class = 0;
+	else if (nf == 9 && memcmp(s, "leaf ", 5) == 0 && e - f[8] == 1 &&
+	    strchr("FEP", *f[8]) != NULL)
+		c->class = *f[8];
+	else
+		return -1;
+	if ((level = decimal(f[2], f[3] - 1)) < 0 || level > QT_MAXLEVEL ||
+	    (ix = decimal(f[3], f[4] - 1)) < 0 ||
+	    (iy = decimal(f[4], f[5] - 1)) < 0 ||
+	    f[2] - 1 - f[1] != (level > 0 ? level : 1))
+		return -1;
+	memcpy(path, f[1], f[2] - 1 - f[1]);
+	path[f[2] - 1 - f[1]] = '\0';
+	if (pathcell(path, (int)level, &px, &py) < 0 ||
+	    px != (uint64_t)ix || py != (uint64_t)iy)
+		return -1;
+	if (level == 0)
+		path[0] = '\0';
+	c->path = level > 0 ? path : ".";
+	c->level = (int)level;
+	c->ix = px;
+	c->iy = py;
+	c->id = 0;
+	c->frac = -1;
+	c->text = NULL;
+	c->textlen = 0;
+	return 0;
+}
+
+/*
+ * Whether input p, the file at path, is a shard to copy whole: a regular
+ * file, one stream, the first head byte for byte, then cells from its
+ * first to its last in preorder of one subtree (the last a leaf that ends
+ * the subtree of the first), then the end record.  Else 0, and the reader
+ * reads it.
+ */
+static int
+probe(struct input *p, const char *path)
+{
+	struct block b;
+	struct stat st;
+	char tail[512], *t, *nl, *end;
+	size_t k, n;
+	long long count;
+	int fd;
+
+	if (strcmp(path, "-") == 0 || (fd = open(path, O_RDONLY)) < 0)
+		return 0;
+	memset(&b, 0, sizeof(b));
+	b.fd = fd;
+	if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode) ||
+	    st.st_size < (off_t)headlen + 16)
+		goto no;
+	/* the head, byte for byte */
+	if (chunk == NULL)
+		chunk = xmalloc(CHUNK);
+	for (k = 0; k < headlen; k += n) {
+		n = headlen - k < CHUNK ? headlen - k : CHUNK;
+		if (readat(fd, chunk, n, (off_t)k) != (ssize_t)n ||
+		    memcmp(chunk, headtext + k, n) != 0)
+			goto no;
+	}
+	/* the first cell */
+	n = (size_t)(st.st_size - (off_t)headlen) < sizeof(tail) ?
+	    (size_t)(st.st_size - (off_t)headlen) : sizeof(tail);
+	if (readat(fd, tail, n, (off_t)headlen) != (ssize_t)n ||
+	    (nl = memchr(tail, '\n', n)) == NULL ||
+	    blockcell(tail, nl - tail, &p->rec.c, b.firstpath) < 0)
+		goto no;
+	b.from = (off_t)headlen;
+	b.firstlen = nl - tail + 1;
+	/* the end record, and the last cell before it */
+	n = (size_t)(st.st_size - b.from) < sizeof(tail) ?
+	    (size_t)(st.st_size - b.from) : sizeof(tail);
+	if (readat(fd, tail, n, st.st_size - (off_t)n) != (ssize_t)n ||
+	    tail[n - 1] != '\n')
+		goto no;
+	end = tail + n - 1;
+	for (t = end; t > tail && t[-1] != '\n'; t--)
+		;
+	if (t == tail || end - t < 5 || memcmp(t, "end ", 4) != 0 ||
+	    (count = decimal(t + 4, end)) < 0 ||
+	    (unsigned long long)count <= headrecs)
+		goto no;
+	b.ncells = (unsigned long long)count - headrecs;
+	b.to = st.st_size - (off_t)(tail + n - t);
+	for (nl = t - 1; nl > tail && nl[-1] != '\n'; nl--)
+		;
+	if (nl == tail && b.to - (off_t)(t - nl) != b.from)
+		goto no;	/* the last cell's line is not all in tail */
+	if (blockcell(nl, t - 1 - nl, &b.last, b.lastpath) < 0)
+		goto no;
+	/*
+	 * One subtree, whole: a leaf alone, or a node and, last, the leaf
+	 * 33...3 under it.
+	 */
+	if (p->rec.c.class != 0) {
+		if (b.to - b.from != (off_t)b.firstlen)
+			goto no;
+	} else {
+		if (b.last.class == 0 || b.last.level <= p->rec.c.level ||
+		    memcmp(b.lastpath, b.firstpath, p->rec.c.level) != 0)
+			goto no;
+		for (k = p->rec.c.level; k < (size_t)b.last.level; k++)
+			if (b.lastpath[k] != '3')
+				goto no;
+	}
+	p->b = xmalloc(sizeof(*p->b));
+	*p->b = b;
+	p->rec.c.path = p->b->firstpath[0] ? p->b->firstpath : ".";
+	p->b->last.path = p->b->lastpath[0] ? p->b->lastpath : ".";
+	p->rec.lineno = headlines + 1;
+	return 1;
+no:
+	close(fd);
+	return 0;
+}
+
+/*
+ * A shard that another input has a cell among, or that follows no
+ * stream: the reader reads it after all, its head again.
+ */
+static void
+unblock(struct input *p)
+{
+	FILE *fp;
+
+	close(p->b->fd);
+	free(p->b);
+	p->b = NULL;
+	fp = openin(p->path, &p->name);
+	p->r = qt_open(fp, p->name, QT_NEEDUNIVERSE | QT_ARCS | QT_CONCAT);
+	if (!readhead(p))
+		nextstream(p);
+}
+
+/*
+ * The newlines of n bytes, eight at a time: a byte of x ^ 0x0a...0a is
+ * 0 at a newline, and (y & 0x7f) + 0x7f has its high bit clear only for
+ * y 0 (y's own high bit or'ed in).
+ */
+static unsigned long long
+newlines(const char *s, size_t n)
+{
+	const uint64_t pairs = 0x00ff00ff00ff00ffu, quads = 0x0001000100010001u;
+	const uint64_t high = 0x8080808080808080u;
+	const uint64_t low = 0x7f7f7f7f7f7f7f7fu, nl = 0x0a0a0a0a0a0a0a0au;
+	unsigned long long c = 0;
+	uint64_t x, y, z, acc;
+	size_t i = 0, k;
+
+	while (n - i >= 8) {
+		/* at most 255 words into one byte-wise sum */
+		acc = 0;
+		for (k = 0; k < 255 && n - i >= 8; k++, i += 8) {
+			memcpy(&x, s + i, 8);
+			y = x ^ nl;
+			z = ~(((y & low) + low) | y) & high;
+			acc += z >> 7;
+		}
+		/* the eight byte sums, up to 255 each, as four of 16 bits */
+		acc = (acc & pairs) + (acc >> 8 & pairs);
+		c += (acc * quads) >> 48;
+	}
+	for (; i < n; i++)
+		c += s[i] == '\n';
+	return c;
+}
+
+/* Writes shard p whole, its first cell at its place in the merge. */
+static void
+putblock(struct input *p)
+{
+	struct block *b = p->b;
+	struct cell *c = &p->rec.c;
+	unsigned long long lines = 0, want = b->ncells;
+	off_t at = b->from;
+	size_t n;
+	ssize_t k;
+
+	if (last.have && follows(c) < 0 && !misfit(c, p->name, p->rec.lineno)) {
+		at += (off_t)b->firstlen;	/* a node given again */
+		want--;
+	}
+	if (!last.have) {
+		memcpy(root.path, b->firstpath, c->level);
+		root.path[c->level] = '\0';
+		root.level = c->level;
+		root.class = c->class;
+		root.name = p->name;
+		root.lineno = p->rec.lineno;
+		root.have = 1;
+	}
+	for (; at < b->to; at += (off_t)n) {
+		n = b->to - at < CHUNK ? (size_t)(b->to - at) : CHUNK;
+		if ((k = readat(b->fd, chunk, n, at)) != (ssize_t)n)
+			die(1, "%s: %s", p->name, k < 0 ? strerror(errno) :
+			    "the file shrank while read");
+		lines += newlines(chunk, n);
+		qt_copy(chunk, n, 0);
+	}
+	if (lines != want)
+		errat(p->name, headlines + 1 + (long)b->ncells,
+		    "its end record counts %llu cells, the lines between its "
+		    "head and it are %llu: a shard copied whole must be one "
+		    "whole stream (qtcat -c reads every cell)", b->ncells,
+		    lines + (b->ncells - want));
+	qt_copy("", 0, lines);
+	memcpy(last.path, b->lastpath, b->last.level);
+	last.path[b->last.level] = '\0';
+	last.level = b->last.level;
+	last.class = b->last.class;
+	last.name = p->name;
+	last.lineno = p->rec.lineno + (long)b->ncells - 1;
+	last.have = 1;
+	close(b->fd);
+	free(b);
+	p->b = NULL;
+	p->done = 1;
+}
+
 /* At the end of the merge, the tree must be whole. */
 static void
 endtree(void)
@@ -440,7 +775,7 @@ static void
 merge(void)
 {
 	struct input **h = xreallocarray(NULL, nin, sizeof(*h));
-	struct input *p;
+	struct input *p, *q;
 	int n = 0, i;
 
 	for (i = 0; i < nin; i++)
@@ -450,6 +785,23 @@ merge(void)
 		siftdown(h, n, i);
 	while (n > 0) {
 		p = h[0];
+		if (p->b != NULL) {
+			/* the next cell of the other inputs, after its last? */
+			q = n > 1 ? h[1] : NULL;
+			if (n > 2 && before(h[2], h[1]))
+				q = h[2];
+			if (q != NULL && cellcmp(&q->rec.c, &p->b->last) <= 0) {
+				unblock(p);
+				if (p->done)
+					h[0] = h[--n];
+				siftdown(h, n, 0);
+				continue;
+			}
+			putblock(p);
+			h[0] = h[--n];
+			siftdown(h, n, 0);
+			continue;
+		}
 		putcell(&p->rec.c, p->name, p->rec.lineno);
 		if (!nextcell(p))
 			h[0] = h[--n];
@@ -538,8 +890,11 @@ main(int argc, char *argv[])
 	int ch, i, nstdin = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "uh")) != -1)
+	while ((ch = getopt(argc, argv, "cuh")) != -1)
 		switch (ch) {
+		case 'c':
+			checkall = 1;
+			break;
 		case 'u':
 			unsealed = 1;
 			break;
@@ -559,6 +914,14 @@ main(int argc, char *argv[])
 	for (i = 0; i < nin; i++) {
 		if (strcmp(argv[i], "-") == 0 && nstdin++ > 0)
 			die(2, "the standard input (-) named twice");
+		in[i].path = argv[i];
+		if (i > 0 && headname != NULL && headtext == NULL &&
+		    !unsealed && !checkall)
+			headbytes();
+		if (headtext != NULL && probe(&in[i], argv[i])) {
+			in[i].name = argv[i];
+			continue;
+		}
 		fp = openin(argv[i], &in[i].name);
 		in[i].r = qt_open(fp, in[i].name,
 		    QT_NEEDUNIVERSE | QT_ARCS | (unsealed ? QT_UNSEALED : QT_CONCAT));

@@ -2,6 +2,8 @@
  * qtstats: figures about a qtree(5) stream (its polygon, its cells, its
  * mesh) as "key value" lines, one space between, for awk.  The keys are an
  * interface: qtstats(1) lists them, and they keep their names and meaning.
+ * With -s it writes instead the exact sums behind the figures, and with -m
+ * it adds up such sums, of the shards of a tree, into the tree's figures.
  */
 #include <math.h>
 #include <stdint.h>
@@ -43,6 +45,34 @@ static struct tree {
 	struct xsum	 cut;	/* the leaves' area fractions times areas */
 	unsigned long long ncut;	/* leaves with a fraction */
 } tree = { .deepest = -1 };
+
+/*
+ * For -s: the first cell, and the nodes without a cell below them (as the
+ * top of a cut, qtsplit -t, has at its last level), each found when the
+ * next cell in preorder is not inside it.
+ */
+struct nodeat {
+	char		 path[QT_MAXLEVEL + 1];
+	int		 level;
+	uint64_t	 ix, iy;
+	char		 class;	/* 'N' for a node */
+};
+
+static struct sums {
+	int		 on;
+	struct nodeat	 root, open;	/* the first cell, the last node */
+	int		 haveroot, haveopen;
+	struct nodeat	*dangling;
+	size_t		 ndangling, cap;
+	/*
+	 * The region's moments cost more than the rest of a shard's head:
+	 * only the partial of the tree's root, or of no cells, carries them,
+	 * so the rings wait for the first cell, their perimeter summed.
+	 */
+	struct ring	*rings;
+	size_t		 nrings, ringcap;
+	int		 decided, moments;
+} sums;
 
 /*
  * Level jumps between side neighbours, found as the leaves stream past.
@@ -95,10 +125,12 @@ static struct mesh {
 	size_t		 ntypes;
 } mesh;
 
+static int merged;	/* -m: the figures of several inputs' sums */
+
 static void
 usage(int help)
 {
-	usageexit(help, "usage: qtstats [-hlv] [file]\n");
+	usageexit(help, "usage: qtstats [-hlmsv] [file ...]\n");
 }
 
 static void
@@ -173,11 +205,19 @@ arcedge(struct point a, struct point m, struct point b)
 	addperim(g.len);
 }
 
+static void ringperim(const struct ring *);
+static void keepring(const struct ring *);
+
 static void
 ring(const struct ring *g)
 {
 	size_t i;
 
+	if (sums.on && !sums.decided) {
+		keepring(g);
+		ringperim(g);
+		return;
+	}
 	poly.nrings++;
 	poly.nholes += g->hole;
 	for (i = 0; i < g->n; i++)
@@ -186,6 +226,78 @@ ring(const struct ring *g)
 		else
 			edge(g->v[i], g->v[(i + 1) % g->n]);
 	endring(g->hole);
+}
+
+/* -s: a ring kept until the first cell says whether to sum it. */
+static void
+keepring(const struct ring *g)
+{
+	struct ring *k;
+
+	sums.rings = xgrow(sums.rings, &sums.ringcap, sums.nrings + 1,
+	    sizeof(*sums.rings));
+	k = &sums.rings[sums.nrings++];
+	*k = *g;
+	k->v = xreallocarray(NULL, g->n, sizeof(*k->v));
+	memcpy(k->v, g->v, g->n * sizeof(*k->v));
+	if (g->narcs > 0) {
+		k->arc = xmalloc(g->n);
+		memcpy(k->arc, g->arc, g->n);
+		k->mid = xreallocarray(NULL, g->n, sizeof(*k->mid));
+		memcpy(k->mid, g->mid, g->n * sizeof(*k->mid));
+	}
+}
+
+/* The perimeter alone, as ring() sums it. */
+static void
+ringperim(const struct ring *g)
+{
+	struct arc c;
+	struct arcmeasures m;
+	size_t i;
+
+	for (i = 0; i < g->n; i++) {
+		struct point a = g->v[i], b = g->v[(i + 1) % g->n];
+
+		if (g->narcs > 0 && g->arc[i]) {
+			if (arc_init(&c, a, g->mid[i], b) < 0)
+				die(1, "arc through three points on a line");
+			arc_measures(&c, &m);
+			addperim(m.len);
+		} else
+			addperim(hypot(b.x - a.x, b.y - a.y));
+	}
+}
+
+/*
+ * -s: at the first cell (NULL: none), the kept rings are summed whole
+ * when it is the universe's root, else only counted.
+ */
+static void
+decide(const struct cell *c)
+{
+	size_t i;
+
+	sums.decided = 1;
+	sums.moments = c == NULL || c->level == 0;
+	if (sums.moments) {
+		poly.perim = poly.perimlow = 0;
+		for (i = 0; i < sums.nrings; i++)
+			ring(&sums.rings[i]);
+	} else
+		for (i = 0; i < sums.nrings; i++) {
+			poly.nrings++;
+			poly.nholes += sums.rings[i].hole;
+		}
+	for (i = 0; i < sums.nrings; i++) {
+		free(sums.rings[i].v);
+		if (sums.rings[i].narcs > 0) {
+			free(sums.rings[i].arc);
+			free(sums.rings[i].mid);
+		}
+	}
+	free(sums.rings);
+	sums.nrings = 0;
 }
 
 /* Sets side s to a's entries, then b's. */
@@ -316,6 +428,45 @@ jumpleaf(const char *path, int level)
 }
 
 static void
+nodeat(struct nodeat *n, const struct cell *c)
+{
+	memcpy(n->path, c->path, c->level);
+	n->path[c->level] = '\0';
+	n->level = c->level;
+	n->ix = c->ix;
+	n->iy = c->iy;
+	n->class = c->class == 0 ? 'N' : c->class;
+}
+
+/* The last node dangles when cell c (NULL: none) is not inside it. */
+static void
+sumcell(const struct cell *c)
+{
+	struct nodeat *o = &sums.open;
+
+	if (sums.haveopen && (c == NULL || c->level <= o->level ||
+	    (o->level > 0 &&
+	    pathprefix(c->path, c->level, o->path, o->level) < o->level))) {
+		sums.dangling = xgrow(sums.dangling, &sums.cap,
+		    sums.ndangling + 1, sizeof(*sums.dangling));
+		sums.dangling[sums.ndangling++] = *o;
+	}
+	sums.haveopen = 0;
+	if (!sums.decided)
+		decide(c);
+	if (c == NULL)
+		return;
+	if (!sums.haveroot) {
+		nodeat(&sums.root, c);
+		sums.haveroot = 1;
+	}
+	if (c->class == 0) {
+		nodeat(o, c);
+		sums.haveopen = 1;
+	}
+}
+
+static void
 addcell(const struct cell *c)
 {
 	struct levelstat *s = &tree.lev[c->level];
@@ -323,6 +474,8 @@ addcell(const struct cell *c)
 
 	if (c->level > tree.deepest)
 		tree.deepest = c->level;
+	if (sums.on)
+		sumcell(c);
 	if (c->class == 0) {
 		s->nodes++;
 		add128(&s->nodesx, 2 * c->ix + 1);
@@ -713,6 +866,8 @@ depthfigures(unsigned long long leaves)
 	else
 		putreal("uniform_cells", uniform);
 	putreal("saving", (double)leaves / uniform);
+	if (merged)	/* the shards' leaves do not meet across them */
+		return;
 	/* the end of the stream closes the subtrees still open */
 	jumpleaf(NULL, 0);
 	putcount("max_level_jump", jump.max);
@@ -956,17 +1111,545 @@ report(int table)
 		leveltable(area);
 }
 
+/*
+ * -s: the sums behind the figures, exact, as lines that -m reads: the
+ * head's (the same in every shard), the first cell and the nodes with no
+ * cell below them, and per level the counts and the sums of 2 IX + 1 and
+ * 2 IY + 1 (128 bits: high and low 64), the expansions as their
+ * components, each written so that it reads back to the same double.
+ */
+static void
+put128(const struct u128 *v)
+{
+	printf(" %llu %llu", (unsigned long long)v->hi,
+	    (unsigned long long)v->lo);
+}
+
+static void
+putxsum(const char *key, const struct xsum *x)
+{
+	char buf[32];
+	int i;
+
+	fputs(key, stdout);
+	for (i = 0; i < x->n; i++)
+		printf(" %s", (fmtreal(buf, x->h[i]), buf));
+	putchar('\n');
+}
+
+static void
+putnodeat(const char *key, const struct nodeat *n, int withclass)
+{
+	printf("%s %s %d %llu %llu", key, n->level > 0 ? n->path : ".",
+	    n->level, (unsigned long long)n->ix, (unsigned long long)n->iy);
+	if (withclass)
+		printf(" %c", n->class);
+	putchar('\n');
+}
+
+static void
+sumsreport(const char *name)
+{
+	char b0[32], b1[32], b2[32];
+	size_t i;
+	int l, k;
+
+	if (mesh.present)
+		errat(name, 0, "a mesh: -s sums the figures of trees only");
+	sumcell(NULL);
+	printf("qtstats-sums 1\n");
+	if (tree.haveuniverse)
+		printf("universe %s %s %s\n", (fmtreal(b0, tree.u.x0), b0),
+		    (fmtreal(b1, tree.u.y0), b1),
+		    (fmtreal(b2, tree.u.size), b2));
+	printf("objects %ld\nrings %llu\nholes %llu\n", poly.nobjects,
+	    poly.nrings, poly.nholes);
+	printf("perimeter %s %s\n", (fmtreal(b0, poly.perim), b0),
+	    (fmtreal(b1, poly.perimlow), b1));
+	if (sums.moments) {
+		putxsum("area2", &poly.region.a2);
+		putxsum("moment_x", &poly.region.mx);
+		putxsum("moment_y", &poly.region.my);
+	}
+	if (sums.haveroot)
+		putnodeat("root", &sums.root, 1);
+	for (i = 0; i < sums.ndangling; i++)
+		putnodeat("dangling", &sums.dangling[i], 0);
+	for (l = 0; l <= tree.deepest; l++) {
+		const struct levelstat *s = &tree.lev[l];
+
+		printf("level %d %llu %llu %llu %llu", l, s->nodes,
+		    s->leaves[F], s->leaves[E], s->leaves[P]);
+		put128(&s->nodesx);
+		put128(&s->nodesy);
+		for (k = 0; k < 3; k++) {
+			put128(&s->sx[k]);
+			put128(&s->sy[k]);
+		}
+		putchar('\n');
+	}
+	printf("cut %llu", tree.ncut);
+	putxsum("", &tree.cut);
+	printf("end\n");
+}
+
+/*
+ * -m: the sums of several inputs added up.  A partial is one -s output;
+ * its head lines must be the first partial's, byte for byte.  A partial's
+ * root that is a node at the end of another partial (the top of a cut,
+ * qtsplit -t, lists the shards' roots as nodes) is counted once.
+ */
+struct claim {
+	struct nodeat	 n;
+	const char	*name;
+	long		 lineno;
+	int		 part;		/* the partial's number */
+	int		 claimed;
+};
+
+static struct merge {
+	struct claim	*roots, *dangling;
+	size_t		 nroots, rootcap, ndangling, dangcap;
+	int		 partials;
+} mg;
+
+static int
+getu64(const char *s, uint64_t *v)
+{
+	uint64_t x = 0;
+
+	*v = 0;
+	if (*s == '\0')
+		return -1;
+	for (; *s >= '0' && *s <= '9'; s++) {
+		if (x > (UINT64_MAX - (uint64_t)(*s - '0')) / 10)
+			return -1;
+		x = 10 * x + (uint64_t)(*s - '0');
+	}
+	*v = x;
+	return *s == '\0' ? 0 : -1;
+}
+
+static double
+getreal(const char *s, const char *name, long lineno)
+{
+	const char *end;
+	double v;
+
+	if (parsereal(s, &end, &v) != 0 || *end != '\0')
+		errat(name, lineno, "not a number: %s", s);
+	return v;
+}
+
+static uint64_t
+getcount(const char *s, const char *name, long lineno)
+{
+	uint64_t v;
+
+	if (getu64(s, &v) < 0)
+		errat(name, lineno, "not a count: %s", s);
+	return v;
+}
+
+static void
+addxsum(struct xsum *x, char **f, int nf, const char *name, long lineno)
+{
+	int i;
+
+	for (i = 0; i < nf; i++)
+		xs_add(x, getreal(f[i], name, lineno));
+}
+
+static void
+addto128(struct u128 *s, char **f, int sign, const char *name, long lineno)
+{
+	struct u128 v;
+
+	v.hi = getcount(f[0], name, lineno);
+	v.lo = getcount(f[1], name, lineno);
+	if (sign > 0) {
+		s->lo += v.lo;
+		s->hi += v.hi + (s->lo < v.lo);
+	} else {
+		s->hi -= v.hi + (s->lo < v.lo);
+		s->lo -= v.lo;
+	}
+}
+
+static void
+getnodeat(struct claim *c, char **f, int nf, int withclass,
+    const char *name, long lineno)
+{
+	struct nodeat *n = &c->n;
+	uint64_t ix, iy, lv = 0;
+
+	if (nf != 4 + withclass || getu64(f[1], &lv) < 0 ||
+	    lv > QT_MAXLEVEL || (lv == 0 ? strcmp(f[0], ".") != 0 :
+	    strlen(f[0]) != (size_t)lv) ||
+	    (withclass && (strchr("NFEP", f[4][0]) == NULL ||
+	    f[4][1] != '\0')) ||
+	    getu64(f[2], &n->ix) < 0 || getu64(f[3], &n->iy) < 0 ||
+	    pathcell(f[0], (int)lv, &ix, &iy) < 0 ||
+	    ix != n->ix || iy != n->iy)
+		errat(name, lineno, "a bad cell: %s %s", f[0],
+		    nf > 1 ? f[1] : "");
+	n->level = (int)lv;
+	memcpy(n->path, f[0], lv);
+	n->path[lv] = '\0';
+	n->class = withclass ? f[4][0] : 'N';
+	c->name = name;
+	c->lineno = lineno;
+	c->part = mg.partials;
+	c->claimed = 0;
+}
+
+/* Splits line into fields at spaces, in place; returns their number. */
+static int
+fields(char *line, char ***f, size_t *cap)
+{
+	int n = 0;
+	char *p = line;
+
+	for (;;) {
+		while (*p == ' ')
+			p++;
+		if (*p == '\0' || *p == '\n')
+			break;
+		*f = xgrow(*f, cap, (size_t)n + 1, sizeof(**f));
+		(*f)[n++] = p;
+		while (*p != ' ' && *p != '\0' && *p != '\n')
+			p++;
+		if (*p == '\0')
+			break;
+		*p++ = '\0';
+	}
+	return n;
+}
+
+/*
+ * The head lines of a partial: the polygon's marks (universe, objects,
+ * rings, holes, perimeter), which every partial has, read from the first;
+ * the region's sums, which the partial of the tree's root has, read from
+ * the first that has them.
+ */
+static int
+headline(const char *line)
+{
+	static const char *const keys[] = { "universe", "objects", "rings",
+	    "holes", "perimeter", "area2", "moment_x", "moment_y", NULL };
+	size_t n = strcspn(line, " \n");
+	int i;
+
+	for (i = 0; keys[i] != NULL; i++)
+		if (strlen(keys[i]) == n && memcmp(line, keys[i], n) == 0)
+			return i < 5 ? 1 : 2;
+	return 0;
+}
+
+static void
+mergehead(char **f, int nf, const char *name, long lineno)
+{
+	const char *k = f[0];
+
+	if (strcmp(k, "universe") == 0 && nf == 4) {
+		tree.u.x0 = getreal(f[1], name, lineno);
+		tree.u.y0 = getreal(f[2], name, lineno);
+		tree.u.size = getreal(f[3], name, lineno);
+		tree.haveuniverse = 1;
+	} else if (strcmp(k, "objects") == 0 && nf == 2)
+		poly.nobjects = (long)getcount(f[1], name, lineno);
+	else if (strcmp(k, "rings") == 0 && nf == 2)
+		poly.nrings = getcount(f[1], name, lineno);
+	else if (strcmp(k, "holes") == 0 && nf == 2)
+		poly.nholes = getcount(f[1], name, lineno);
+	else if (strcmp(k, "perimeter") == 0 && nf == 3) {
+		poly.perim = getreal(f[1], name, lineno);
+		poly.perimlow = getreal(f[2], name, lineno);
+	} else if (strcmp(k, "area2") == 0)
+		addxsum(&poly.region.a2, f + 1, nf - 1, name, lineno);
+	else if (strcmp(k, "moment_x") == 0)
+		addxsum(&poly.region.mx, f + 1, nf - 1, name, lineno);
+	else if (strcmp(k, "moment_y") == 0)
+		addxsum(&poly.region.my, f + 1, nf - 1, name, lineno);
+	else
+		errat(name, lineno, "not a line of qtstats -s: %s", k);
+}
+
+/* Lines kept to compare, one buffer each kind. */
+struct text {
+	char	*b;
+	size_t	 len, cap;
+};
+
+static void
+addtext(struct text *t, const char *line, size_t len)
+{
+	t->b = xgrow(t->b, &t->cap, t->len + len, 1);
+	memcpy(t->b + t->len, line, len);
+	t->len += len;
+}
+
+static int
+sametext(const struct text *a, const struct text *b)
+{
+	return a->len == b->len && memcmp(a->b, b->b, a->len) == 0;
+}
+
+static struct text firstmarks, firstsums;
+static int havemarks, havesums;
+
+/* One input of -m: any number of partials, one after another. */
+static void
+mergeinput(const char *path)
+{
+	const char *name;
+	FILE *fp = openin(path, &name);
+	char *line = NULL, **f = NULL;
+	size_t linecap = 0, fcap = 0, len;
+	struct text marks = { NULL, 0, 0 }, psums = { NULL, 0, 0 };
+	ssize_t n;
+	long lineno = 0, start = 0;
+	int nf, in = 0, l, kind = 0;
+	struct levelstat *s;
+
+	name = xstrdup(name);	/* messages after the file is closed */
+	while ((n = getline(&line, &linecap, fp)) != -1) {
+		lineno++;
+		len = (size_t)n;
+		if (in == 1 && (kind = headline(line)) == 0) {
+			/* the head ends: the first's, or the same bytes */
+			if (!havemarks) {
+				firstmarks = marks;
+				marks.b = NULL;
+				marks.cap = 0;
+				havemarks = 1;
+			} else if (!sametext(&marks, &firstmarks))
+				errat(name, start, "another polygon: the head "
+				    "differs from the first input's");
+			if (psums.len > 0 && !havesums) {
+				firstsums = psums;
+				psums.b = NULL;
+				psums.cap = 0;
+				havesums = 1;
+			} else if (psums.len > 0 &&
+			    !sametext(&psums, &firstsums))
+				errat(name, start, "another polygon: the "
+				    "region's sums differ from the first's");
+			in = 2;
+		}
+		if (in == 1)
+			addtext(kind == 1 ? &marks : &psums, line, len);
+		if ((nf = fields(line, &f, &fcap)) == 0)
+			errat(name, lineno, "an empty line");
+		if (in == 0) {
+			if (nf != 2 || strcmp(f[0], "qtstats-sums") != 0 ||
+			    strcmp(f[1], "1") != 0)
+				errat(name, lineno, "not the output of "
+				    "qtstats -s: %s", f[0]);
+			in = 1;
+			start = lineno;
+			marks.len = psums.len = 0;
+			mg.partials++;
+			continue;
+		}
+		if (in == 1) {
+			if (kind == 1 ? !havemarks : !havesums)
+				mergehead(f, nf, name, lineno);
+			continue;
+		}
+		if (strcmp(f[0], "end") == 0 && nf == 1) {
+			in = 0;
+			continue;
+		}
+		if (strcmp(f[0], "root") == 0) {
+			mg.roots = xgrow(mg.roots, &mg.rootcap, mg.nroots + 1,
+			    sizeof(*mg.roots));
+			getnodeat(&mg.roots[mg.nroots++], f + 1, nf - 1, 1,
+			    name, lineno);
+		} else if (strcmp(f[0], "dangling") == 0) {
+			mg.dangling = xgrow(mg.dangling, &mg.dangcap,
+			    mg.ndangling + 1, sizeof(*mg.dangling));
+			getnodeat(&mg.dangling[mg.ndangling++], f + 1, nf - 1,
+			    0, name, lineno);
+		} else if (strcmp(f[0], "level") == 0 && nf == 22) {
+			uint64_t lv = getcount(f[1], name, lineno);
+
+			if (lv > QT_MAXLEVEL)
+				errat(name, lineno, "level %s is past %d",
+				    f[1], QT_MAXLEVEL);
+			l = (int)lv;
+			s = &tree.lev[l];
+			if (l > tree.deepest)
+				tree.deepest = l;
+			s->nodes += getcount(f[2], name, lineno);
+			s->leaves[F] += getcount(f[3], name, lineno);
+			s->leaves[E] += getcount(f[4], name, lineno);
+			s->leaves[P] += getcount(f[5], name, lineno);
+			addto128(&s->nodesx, f + 6, 1, name, lineno);
+			addto128(&s->nodesy, f + 8, 1, name, lineno);
+			for (l = 0; l < 3; l++) {
+				addto128(&s->sx[l], f + 10 + 4 * l, 1, name,
+				    lineno);
+				addto128(&s->sy[l], f + 12 + 4 * l, 1, name,
+				    lineno);
+			}
+		} else if (strcmp(f[0], "cut") == 0 && nf >= 2) {
+			tree.ncut += getcount(f[1], name, lineno);
+			addxsum(&tree.cut, f + 2, nf - 2, name, lineno);
+		} else
+			errat(name, lineno, "not a line of qtstats -s: %s",
+			    f[0]);
+	}
+	if (ferror(fp))
+		die(1, "%s: read error", name);
+	if (in != 0)
+		errat(name, lineno, "truncated: the output of qtstats -s "
+		    "that starts at line %ld has no end line", start);
+	if (fp != stdin)
+		fclose(fp);
+	free(line);
+	free(f);
+	free(marks.b);
+	free(psums.b);
+}
+
+/* Preorder, then the partial. */
+static int
+claimcmp(const void *va, const void *vb)
+{
+	const struct claim *a = va, *b = vb;
+	struct cell ca, cb;
+	int d;
+
+	ca.level = a->n.level;
+	ca.ix = a->n.ix;
+	ca.iy = a->n.iy;
+	cb.level = b->n.level;
+	cb.ix = b->n.ix;
+	cb.iy = b->n.iy;
+	if ((d = cellcmp(&ca, &cb)) != 0)
+		return d;
+	return (a->part > b->part) - (a->part < b->part);
+}
+
+static int
+samecell(const struct claim *a, const struct claim *b)
+{
+	return a->n.level == b->n.level && a->n.ix == b->n.ix &&
+	    a->n.iy == b->n.iy;
+}
+
+/* Whether b is a or inside it. */
+static int
+within(const struct claim *b, const struct claim *a)
+{
+	int k = b->n.level - a->n.level;
+
+	return k >= 0 && b->n.ix >> k == a->n.ix && b->n.iy >> k == a->n.iy;
+}
+
+/* The first of n claims sorted by claimcmp that is not before c. */
+static size_t
+lowerbound(const struct claim *v, size_t n, const struct claim *c)
+{
+	size_t lo = 0, hi = n, mid;
+	struct claim k = *c;
+
+	k.part = -1;
+	while (lo < hi) {
+		mid = lo + (hi - lo) / 2;
+		if (claimcmp(&v[mid], &k) < 0)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+static const char *
+claimpath(const struct claim *c)
+{
+	return c->n.level > 0 ? c->n.path : ".";
+}
+
+/*
+ * The partials join: a node with no cell below it in its partial (the
+ * top of a cut ends in such nodes) has its cells in another partial, of
+ * a root at it or below it; a root that is such a node of another
+ * partial is counted once, as qtcat writes a node given twice; no two
+ * partials have the same root, unless one of them is that node alone.
+ */
+static void
+mergejoin(const char *name)
+{
+	struct claim *r, *d, *e;
+	struct levelstat *s;
+	size_t i, j;
+
+	if (mg.partials == 0)
+		errat(name, 0, "no output of qtstats -s to merge");
+	if (!havesums && poly.nrings > 0 && poly.nobjects == 0)
+		errat(name, 0, "no input holds the region's sums, which the "
+		    "tree's root carries: merge qtstats -s of the top too");
+	if (mg.nroots > 1)
+		qsort(mg.roots, mg.nroots, sizeof(*mg.roots), claimcmp);
+	if (mg.ndangling > 1)
+		qsort(mg.dangling, mg.ndangling, sizeof(*mg.dangling),
+		    claimcmp);
+	for (i = 0; i < mg.nroots; i++) {
+		r = &mg.roots[i];
+		j = lowerbound(mg.dangling, mg.ndangling, r);
+		for (; j < mg.ndangling && samecell(d = &mg.dangling[j], r);
+		    j++)
+			if (d->part == r->part)
+				r->claimed = 1;		/* a node alone */
+			else if (r->n.class == 'N' && d->claimed == 0) {
+				d->claimed = 1;
+				s = &tree.lev[r->n.level];
+				s->nodes--;
+				add128(&s->nodesx, -(2 * r->n.ix + 1));
+				s->nodesx.hi--;
+				add128(&s->nodesy, -(2 * r->n.iy + 1));
+				s->nodesy.hi--;
+				break;
+			}
+	}
+	for (i = 0; i + 1 < mg.nroots; i++)
+		if (samecell(r = &mg.roots[i], e = &mg.roots[i + 1]) &&
+		    !r->claimed && !e->claimed)
+			errat(e->name, e->lineno, "cell %s is the root of two "
+			    "inputs: also at %s:%ld", claimpath(r), r->name,
+			    r->lineno);
+	for (i = 0; i < mg.ndangling; i++) {
+		d = &mg.dangling[i];
+		j = lowerbound(mg.roots, mg.nroots, d);
+		for (; j < mg.nroots && within(&mg.roots[j], d); j++)
+			if (mg.roots[j].part != d->part)
+				break;
+		if (j == mg.nroots || !within(&mg.roots[j], d))
+			errat(d->name, d->lineno, "node %s has no cells below "
+			    "it in any input: its shard is missing",
+			    claimpath(d));
+	}
+}
+
 int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	int ch, table = 0, verbose = 0;
+	int ch, i, table = 0, verbose = 0;
 
 	setprogname_(argv[0]);
-	while ((ch = getopt(argc, argv, "lvh")) != -1)
+	while ((ch = getopt(argc, argv, "lmsvh")) != -1)
 		switch (ch) {
 		case 'l':
 			table = 1;
+			break;
+		case 'm':
+			merged = 1;
+			break;
+		case 's':
+			sums.on = 1;
 			break;
 		case 'v':
 			verbose = 1;
@@ -976,17 +1659,29 @@ main(int argc, char *argv[])
 		}
 	argc -= optind;
 	argv += optind;
-	if (argc > 1)
+	if ((argc > 1 && !merged) || (merged && (sums.on || verbose)))
 		usage(0);
 
 	mo_init(&poly.region);
 	mo_init(&poly.ring);
 	xs_init(&tree.cut);
+	if (merged) {
+		for (i = 0; i < argc || (argc == 0 && i == 0); i++)
+			mergeinput(argc > 0 ? argv[i] : "-");
+		mergejoin(argc > 0 && strcmp(argv[0], "-") != 0 ? argv[0] :
+		    "stdin");
+		report(table);
+		closeout();
+		return 0;
+	}
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    QT_ARCS | (verbose ? QT_VERBOSE : 0));
 	readstream(r);
+	if (sums.on)
+		sumsreport(qt_name(r));
 	qt_close(r);
-	report(table);
+	if (!sums.on)
+		report(table);
 	closeout();
 	return 0;
 }

@@ -1,30 +1,33 @@
 #!/bin/sh
-# benchshards.sh: the speed-up of shards made by GNU parallel -j 2 over a
-# single qtsplit run, and what limits it.  Run by bench.sh, or alone:
+# benchshards.sh: a tree made in shards by GNU parallel against one run,
+# three ways: the shards' streams through parallel -k into qtcat, the
+# shards written to files by the jobs and joined by one qtcat, and the
+# figures reduced from the shards (qtstats -s in each job, qtstats -m).
+# Run by bench.sh and by make bench-shards, or alone:
 #
 #   make && sh tools/bench/benchshards.sh	(from the project root)
 #
-# The polygon is the star of 10^5 vertices (tools/gen/genpoly.awk) at level 18,
-# where one run takes about a second; the cut is at level 2.  Every figure
-# counts the stream's lines through a pipe (wc -l), so nothing large is
-# written; each is the median of BENCH_RUNS runs (default 3) by hyperfine
-# when installed, else timed here.  The figures:
+# The polygon is the star of 10^5 vertices (tools/gen/genpoly.awk) at level
+# 18, cut at level 2 (16 shards).  Every path's stages are all timed: the
+# top (qtsplit -t), the jobs, parallel, qtcat or qtstats -m; output goes to
+# /dev/null.  Wall seconds are medians of BENCH_RUNS runs (default 3) by
+# hyperfine, CPU seconds (user + system, every process of the path) are
+# GNU time's over one more run, and so is the CPU of each stage of the -j 2
+# runs.  Each path's output is checked first: the same bytes as the one
+# run, or the same figures less max_level_jump.
 #
-#   single	qtsplit -l 18 p.qt | wc -l
-#   sharded	qtsplit -s 2 p.qt | parallel -j J -k qtsplit -r {} p.qt |
-#		qtcat top.qt - | wc -l, for J = 1 and 2: the same bytes
-#   no merge	the same without qtcat: the shards' streams alone
-#   jobs only	parallel -j 2 'qtsplit -r {} p.qt | wc -l': the shards'
-#		work, each counted in its job, nothing through parallel
+# The fixed cost of a shard is measured apart: the same jobs with the tree
+# cut at the cut level itself, so that each job writes its root alone
+# (parallel, two processes started, the polygon read).  So a path's CPU is
+# about the one run's, plus the shards' fixed cost, plus what its merge
+# adds per byte.
 #
-# Then, by GNU time (Debian package time) when installed, the CPU seconds
-# of each stage of one -j 2 run: the shards' qtsplit (and in them the
-# polygon read again, qtsplit -l 0 times the number of shards), parallel
-# (its buffering and copying of the streams), qtcat (the merge), against
-# the single run's: what the work costs in all, and what 2 CPUs could gain.
+# With BENCH_SHARDDEEP set (22, say), the figures of that level are reduced
+# from the shards too, -j 2: seconds, CPU and the largest process's peak
+# memory, nothing written to a file but each job's sums.
 #
 # Environment: BENCH_RUNS, BENCH_SHARDLEVEL (18), BENCH_SHARDCUT (2),
-# BENCH_SHARDN (100000).
+# BENCH_SHARDN (100000), BENCH_SHARDDEEP (none).
 LC_ALL=C
 export LC_ALL
 
@@ -32,16 +35,22 @@ runs=${BENCH_RUNS:-3}
 level=${BENCH_SHARDLEVEL:-18}
 cut=${BENCH_SHARDCUT:-2}
 n=${BENCH_SHARDN:-100000}
+deep=${BENCH_SHARDDEEP:-}
 
 die() {
 	echo "benchshards: $*" >&2
 	exit 1
 }
 
-[ -x ./qtsplit ] && [ -x ./qtcat ] && [ -x ./polyread ] ||
+[ -x ./qtsplit ] && [ -x ./qtcat ] && [ -x ./qtstats ] && [ -x ./polyread ] ||
 	die "run from the project root after make"
 if ! command -v parallel >/dev/null 2>&1; then
 	echo "# shards: GNU parallel is absent (Debian package parallel): skipped"
+	exit 0
+fi
+if ! command -v hyperfine >/dev/null 2>&1 || ! [ -x /usr/bin/time ]; then
+	echo "# shards: hyperfine or GNU time (Debian packages hyperfine, time)" \
+	    "is absent: skipped"
 	exit 0
 fi
 
@@ -49,102 +58,222 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/qtshards.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' 0
 trap 'exit 1' HUP INT TERM
 
-# seconds CMD: the median wall-clock seconds of $runs runs of the shell
-# command CMD, run from $tmp.
-seconds() {
-	if command -v hyperfine >/dev/null 2>&1; then
-		(cd "$tmp" && hyperfine -N --runs "$runs" --style none \
-		    --export-csv h.csv -- "sh -c '$1'" >/dev/null 2>h.err) ||
-			{ cat "$tmp/h.err" >&2; die "failed: $1"; }
-		awk -F, 'NR == 2 { print $(NF - 4) }' "$tmp/h.csv"
-		return
-	fi
-	i=0
-	while [ $i -lt "$runs" ]; do
-		t0=$(date +%s.%N)
-		(cd "$tmp" && sh -c "$1" >/dev/null) || die "failed: $1"
-		awk -v a="$t0" -v b="$(date +%s.%N)" \
-		    'BEGIN { print b - a }' >>"$tmp/t"
-		i=$((i + 1))
-	done
-	sort -n "$tmp/t" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'
-	rm -f "$tmp/t"
-}
-
 top=$(pwd)
 awk -v shape=star -v n="$n" -f tools/gen/genpoly.awk | ./polyread >"$tmp/p.qt" ||
 	die "polyread failed"
 cd "$tmp" || exit 1
+mkdir s
 Q="$top/qtsplit -l $level"
-"$top/qtsplit" -l "$level" -t "$cut" p.qt >top.qt || die "qtsplit -t failed"
-"$top/qtsplit" -l "$level" -s "$cut" p.qt >roots || die "qtsplit -s failed"
+C="$top/qtcat"
+S="$top/qtstats"
+P="parallel --will-cite"
+$Q -s "$cut" p.qt >roots || die "qtsplit -s failed"
 nshards=$(wc -l <roots)
-"$top/qtsplit" -l "$level" p.qt | cksum >single.sum
-jobs() {
-	echo "parallel --will-cite -j $1 -k $Q -r {} p.qt <roots"
+files=$(sed 's|^|s/|; s|$|.qt|' roots | tr '\n' ' ')
+
+# The paths, each a shell command run in $tmp: $1 the number of jobs.
+one() { echo "$Q p.qt >/dev/null"; }
+pipe() {
+	echo "$Q -t $cut p.qt >top.qt && $P -j $1 -k $Q -r {} p.qt <roots |" \
+	    "$C top.qt - >/dev/null"
 }
+tofiles() {
+	echo "$Q -t $cut p.qt >top.qt && $P -j $1 '$Q -r {} p.qt >s/{}.qt'" \
+	    "<roots && $C top.qt $files >/dev/null"
+}
+catonly() { echo "$C top.qt $files >/dev/null"; }
+figs() { echo "$Q p.qt | $S >/dev/null"; }
+mapred() {
+	echo "{ $Q -t $cut p.qt | $S -s; $P -j $1 '$Q -r {} p.qt | $S -s'" \
+	    "<roots; } | $S -m >/dev/null"
+}
+
+# The outputs checked before anything is timed.
+$Q p.qt | cksum >one.sum
 for j in 1 2; do
-	sh -c "$(jobs $j) | $top/qtcat top.qt - | cksum" >sharded.sum
-	cmp -s single.sum sharded.sum ||
-		die "the sharded stream (-j $j) is not the single run's"
+	sh -c "$(pipe $j | sed 's|>/dev/null$|\| cksum >pipe.sum|')" ||
+		die "failed: $(pipe $j)"
+	cmp -s one.sum pipe.sum || die "parallel -k | qtcat, -j $j: not the one run"
+	sh -c "$(tofiles $j | sed 's|>/dev/null$|\| cksum >files.sum|')" ||
+		die "failed: $(tofiles $j)"
+	cmp -s one.sum files.sum || die "shard files and qtcat, -j $j: not the one run"
+	$Q p.qt | $S | grep -v '^max_level_jump ' >one.fig
+	sh -c "$(mapred $j | sed 's|>/dev/null$|>mr.fig|')" ||
+		die "failed: $(mapred $j)"
+	cmp -s one.fig mr.fig || die "map-reduce, -j $j: not the one run's figures"
 done
-cd "$top" || exit 1
+outbytes=$($C top.qt $files | wc -c)
 
-ts=$(seconds "$Q p.qt | wc -l")
-t1=$(seconds "$(jobs 1) | $top/qtcat top.qt - | wc -l")
-t2=$(seconds "$(jobs 2) | $top/qtcat top.qt - | wc -l")
-tn=$(seconds "$(jobs 2) | wc -l")
-tj=$(seconds "parallel --will-cite -j 2 \"$Q -r {} p.qt | wc -l\" <roots")
+# wall CMD: the median wall seconds of $runs runs.
+wall() {
+	printf '%s\n' "$1" >cmd.sh
+	hyperfine -N --runs "$runs" --style none --export-csv h.csv \
+	    -- "sh cmd.sh" >/dev/null 2>h.err ||
+		{ cat h.err >&2; die "failed: $1"; }
+	awk -F, 'NR == 2 { print $(NF - 4) }' h.csv
+}
 
-# CPU seconds (user + system) of each stage of one -j 2 run, by GNU time:
-# the jobs' own, parallel's (its total less the jobs'), qtcat's; and the
-# single run's and a polygon read alone.
-cpu=-
-if [ -x /usr/bin/time ] && /usr/bin/time -f %U -o /dev/null true 2>/dev/null
-then
-	T="/usr/bin/time -f %U+%S -a -o"
-	cd "$tmp" || exit 1
-	: >jobs.t; : >par.t; : >cat.t; : >one.t; : >ring.t
-	sh -c "parallel --will-cite -j 2 -k $T jobs.t $Q -r {} p.qt <roots |
-	    $T cat.t $top/qtcat top.qt - | wc -l" >/dev/null
-	sh -c "$T par.t parallel --will-cite -j 2 -k $Q -r {} p.qt <roots |
-	    wc -l" >/dev/null
-	sh -c "$T one.t $Q p.qt | wc -l" >/dev/null
-	sh -c "$T ring.t $top/qtsplit -l 0 p.qt" >/dev/null
-	cpu=$(for f in one jobs par cat ring; do
-		awk -F+ '{ s += $1 + $2 } END { printf "%.3f ", s }' $f.t
-	done)
-	cd "$top" || exit 1
-fi
+# cpu CMD: the user + system seconds of one run of CMD, all its processes.
+cpu() {
+	printf '%s\n' "$1" >cmd.sh
+	/usr/bin/time -f '%U %S %M' -o cpu.t sh cmd.sh || die "failed: $1"
+	awk '{ printf "%.3f %d\n", $1 + $2, $3 }' cpu.t
+}
+
+# row LABEL J CMD BASEWALL BASECPU: a line of the table.
+row() {
+	w=$(wall "$3")
+	set -- "$1" "$2" "$3" "$4" "$5" "$w" $(cpu "$3")
+	awk -v l="$1" -v j="$2" -v w="$6" -v c="$7" -v bw="$4" -v bc="$5" \
+	    'BEGIN { printf "%-46s %2s %7.3f %6.2f %7.3f %6.2f\n", l, j, w,
+	    bw / w, c, c / bc }'
+}
 
 echo "# shards: star N=$n, level $level, cut at level $cut: $nshards shards," \
     "$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo '?') CPUs," \
-    "load $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
-awk -v ts="$ts" -v t1="$t1" -v t2="$t2" -v tn="$tn" -v tj="$tj" \
-    -v cpu="$cpu" -v k="$nshards" 'BEGIN {
-	f = "%-50s %8.3f s  %s\n"
-	printf f, "single run, counted through a pipe", ts, ""
-	printf f, "sharded, parallel -j 1, joined by qtcat", t1,
-	    sprintf("%.2fx", ts / t1)
-	printf f, "sharded, parallel -j 2, joined by qtcat", t2,
-	    sprintf("%.2fx  the speed-up", ts / t2)
-	printf f, "  -j 2 without the merge (no qtcat)", tn,
-	    sprintf("%.2fx", ts / tn)
-	printf f, "  -j 2, the jobs alone, counted in each job", tj,
-	    sprintf("%.2fx", ts / tj)
-	if (split(cpu, c, " ") < 5)
-		exit
-	print "# CPU seconds (user + system) of one -j 2 run, by stage"
-	printf f, "single run", c[1], ""
-	printf f, "  the jobs, qtsplit -r of every shard", c[2],
-	    sprintf("%.2fx the single run", c[2] / c[1])
-	printf f, "  of which the rings read again, " k " x " c[5] " s",
-	    k * c[5], ""
-	printf f, "  parallel: buffering and copying the streams",
-	    c[3] - c[2], ""
-	printf f, "  qtcat: the merge", c[4], ""
-	w = c[2] + c[3] - c[2] + c[4]
-	printf f, "  all stages", w, sprintf("%.2fx the single run",
-	    w / c[1])
-	printf "%-50s %8.2fx\n", "  so on 2 CPUs at best", 2 * c[1] / w
+    "load $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')," \
+    "$(date -u '+%Y-%m-%d %H:%M UTC')"
+echo "# wall: median of $runs runs; x_one: the one run's wall / this wall;" \
+    "cpu: user + system of every process, one run; x_cpu: cpu / the one run's"
+printf '%-46s %2s %7s %6s %7s %6s\n' "# path" j wall x_one cpu x_cpu
+w1=$(wall "$(one)")
+set -- $(cpu "$(one)")
+c1=$1
+printf '%-46s %2s %7.3f %6.2f %7.3f %6.2f\n' "one run: qtsplit" - "$w1" 1 "$c1" 1
+for j in 1 2; do
+	row "parallel -k | qtcat top.qt -" $j "$(pipe $j)" "$w1" "$c1"
+done
+for j in 1 2; do
+	row "jobs write shard files, then qtcat top.qt files" $j \
+	    "$(tofiles $j)" "$w1" "$c1"
+done >files.rows
+cat files.rows
+wc=$(wall "$(catonly)")
+set -- $(cpu "$(catonly)")
+awk -v w="$wc" -v c="$1" -v b="$outbytes" 'BEGIN {
+	printf "%-46s %2s %7.3f %6s %7.3f %6s\n",
+	    "  qtcat over the files alone", "-", w, "", c, ""
+	printf "# qtcat over the files: %d bytes, %.2f GB/s of wall, %.2f GB/s of CPU\n",
+	    b, b / w / 1e9, b / c / 1e9 }'
+cat_gbs=$(awk -v w="$wc" -v b="$outbytes" 'BEGIN { printf "%.2f", b / w / 1e9 }')
+wf=$(wall "$(figs)")
+set -- $(cpu "$(figs)")
+cf=$1
+printf '%-46s %2s %7.3f %6.2f %7.3f %6.2f\n' "one run: qtsplit | qtstats" - \
+    "$wf" 1 "$cf" 1
+for j in 1 2; do
+	row "map-reduce: qtstats -s in the jobs, qtstats -m" $j "$(mapred $j)" \
+	    "$wf" "$cf"
+done >mr.rows
+cat mr.rows
+
+# The CPU of each stage of the -j 2 runs, by GNU time around each process
+# (a job: its shell and its programs); parallel's own is its total less
+# its jobs'.
+T="/usr/bin/time -f %U+%S -a -o"
+stage() {
+	awk -F+ '{ s += $1 + $2 } END { printf "%.3f", s }' "$1"
+}
+: >top.t; : >jobs.t; : >par.t; : >merge.t
+sh -c "$T top.t $Q -t $cut p.qt >top.qt &&
+    $T par.t $P -j 2 -k $T jobs.t $Q -r {} p.qt <roots |
+    $T merge.t $C top.qt - >/dev/null"
+p_top=$(stage top.t) p_jobs=$(stage jobs.t) p_par=$(stage par.t)
+p_cat=$(stage merge.t)
+: >top.t; : >jobs.t; : >par.t; : >merge.t
+sh -c "$T top.t $Q -t $cut p.qt >top.qt &&
+    $T par.t $P -j 2 \"$T jobs.t $Q -r {} p.qt >s/{}.qt\" <roots &&
+    $T merge.t $C top.qt $files >/dev/null"
+f_top=$(stage top.t) f_jobs=$(stage jobs.t) f_par=$(stage par.t)
+f_cat=$(stage merge.t)
+: >top.t; : >jobs.t; : >par.t; : >merge.t
+sh -c "{ $T top.t $Q -t $cut p.qt | $T top.t $S -s;
+    $T par.t $P -j 2 \"$T jobs.t sh -c '$Q -r {} p.qt | $S -s'\" <roots; } |
+    $T merge.t $S -m >/dev/null"
+m_top=$(stage top.t) m_jobs=$(stage jobs.t) m_par=$(stage par.t)
+m_merge=$(stage merge.t)
+# The fixed cost of the shards: each job cut to its root alone.
+R="$top/qtsplit -l $cut"
+: >jobs.t; : >par.t
+sh -c "$T par.t $P -j 2 \"$T jobs.t $R -r {} p.qt >/dev/null\" <roots"
+x_jobs=$(stage jobs.t) x_par=$(stage par.t)
+: >jobs.t; : >par.t
+sh -c "$T par.t $P -j 2 \"$T jobs.t sh -c '$R -r {} p.qt | $S -s'\" <roots >/dev/null"
+y_jobs=$(stage jobs.t) y_par=$(stage par.t)
+
+awk -v k="$nshards" -v c1="$c1" -v cf="$cf" \
+    -v p_top="$p_top" -v p_jobs="$p_jobs" -v p_par="$p_par" -v p_cat="$p_cat" \
+    -v f_top="$f_top" -v f_jobs="$f_jobs" -v f_par="$f_par" -v f_cat="$f_cat" \
+    -v m_top="$m_top" -v m_jobs="$m_jobs" -v m_par="$m_par" -v m_merge="$m_merge" \
+    -v x_jobs="$x_jobs" -v x_par="$x_par" -v y_jobs="$y_jobs" -v y_par="$y_par" '
+function line(label, v) { printf "  %-44s %7.3f\n", label, v }
+BEGIN {
+	print "# CPU seconds by stage, one -j 2 run each (user + system)"
+	print "parallel -k | qtcat top.qt -"
+	line("the top, qtsplit -t", p_top)
+	line("the jobs, qtsplit -r", p_jobs)
+	line("parallel: its buffering and copying", p_par - p_jobs)
+	line("qtcat: the merge, every cell read", p_cat)
+	line("all stages", p_top + p_par + p_cat)
+	print "jobs write shard files, then qtcat top.qt files"
+	line("the top, qtsplit -t", f_top)
+	line("the jobs, qtsplit -r > file", f_jobs)
+	line("parallel: its own", f_par - f_jobs)
+	line("qtcat: the shards copied whole", f_cat)
+	line("all stages", f_top + f_par + f_cat)
+	print "map-reduce: qtstats -s in the jobs, qtstats -m"
+	line("the top, qtsplit -t | qtstats -s", m_top)
+	line("the jobs, qtsplit -r | qtstats -s", m_jobs)
+	line("parallel: its own", m_par - m_jobs)
+	line("qtstats -m: the merge", m_merge)
+	line("all stages", m_top + m_par + m_merge)
+	printf "# fixed cost of %d shards (each job cut to its root alone), CPU s\n", k
+	line("qtsplit -r jobs and parallel", x_par)
+	line("  of which parallel", x_par - x_jobs)
+	line("qtsplit -r | qtstats -s jobs and parallel", y_par)
+	line("  of which parallel", y_par - y_jobs)
+	printf "  %-44s %7.4f\n", "a shard, map-reduce", y_par / k
 }'
+
+if [ -n "$deep" ]; then
+	cd "$tmp" || exit 1
+	rm -f s/*.qt
+	D="$top/qtsplit -l $deep"
+	$D -s "$cut" p.qt >roots
+	/usr/bin/time -f '%e %U %S %M' -o deep.t sh -c "{ $D -t $cut p.qt |
+	    $S -s; $P -j 2 '$D -r {} p.qt | $S -s' <roots; } | $S -m >deep.fig" ||
+		die "level $deep failed"
+	read -r dw du ds dm <deep.t
+	echo "# level $deep, map-reduce -j 2: $(grep '^leaves ' deep.fig)," \
+	    "$(grep '^cells ' deep.fig); wall $dw s, CPU $(awk -v u="$du" \
+	    -v s="$ds" 'BEGIN { print u + s }') s, largest process $dm KB;" \
+	    "files written: the $(wc -l <roots) jobs' sums, each under 4 KB"
+fi
+
+# The targets of issue 29.
+awk -v c1="$c1" -v cf="$cf" -v w1="$w1" -v wf="$wf" -v gbs="$cat_gbs" \
+    -v f_all="$(awk -v a="$f_top" -v b="$f_par" -v c="$f_cat" 'BEGIN { print a + b + c }')" \
+    -v m_all="$(awk -v a="$m_top" -v b="$m_par" -v c="$m_merge" 'BEGIN { print a + b + c }')" '
+function verdict(label, v, ok) {
+	printf "%-58s %-22s %s\n", label, v, ok ? "PASS" : "FAIL"
+}
+BEGIN {
+	verdict("map-reduce, all stages <= 1.5 x one run'"'"'s CPU (issue 29)",
+	    sprintf("%.2fx", m_all / cf), m_all / cf <= 1.5)
+	verdict("shard files + qtcat, all stages <= 2.5 x CPU (issue 29)",
+	    sprintf("%.2fx", f_all / c1), f_all / c1 <= 2.5)
+	verdict("qtcat over shard files >= 1 GB/s to /dev/null (issue 29)",
+	    gbs " GB/s", gbs >= 1)
+}'
+awk -v w1="$w1" -v wf="$wf" '
+function verdict(label, v, ok) {
+	printf "%-58s %-22s %s\n", label, v, ok ? "PASS" : "FAIL"
+}
+$(NF - 4) == 2 && FILENAME == "mr.rows" { mr = $(NF - 2) }
+$(NF - 4) == 2 && FILENAME == "files.rows" { fi = $(NF - 2) }
+END {
+	verdict("map-reduce -j 2 >= 0.8 x one run'"'"'s speed (issue 29)",
+	    sprintf("%.2fx", mr), mr >= 0.8)
+	verdict("shard files + qtcat -j 2 >= 0.7 x one run'"'"'s speed (issue 29)",
+	    sprintf("%.2fx", fi), fi >= 0.7)
+}' mr.rows files.rows
