@@ -249,6 +249,22 @@ discrecipe() {
 	[[ "$output" != *[Ee]rror* ]]
 }
 
+@test "qtmesh(1), README: the mesh for a solver is within 20 and 140 degrees, and Gmsh reads it" {
+	[ -e samples ] || ln -s "$TOP/tools" "$TOP/samples" .
+	example "$TOP/README" 'qtmesh -b -f msh > amoeba-b.msh' | commands > readme.sh
+	example "$TOP/man/qtmesh.1" 'gmsh -check amoeba-b.msh' | commands > page.sh
+	[ "$(wc -l < readme.sh)" -eq 2 ]
+	grep -Fx -f readme.sh page.sh | diff -u readme.sh -
+	# the same mesh as a qtree stream, its angles by the oracle
+	sed 's/ -f msh > amoeba-b.msh$/ > amoeba-b.qt/' readme.sh | bash
+	run -0 python3 "$TOP/tests/oracle/meshangles.py" -c amoeba-b.qt
+	command -v gmsh >/dev/null || skip "gmsh not installed"
+	grep -v '^gmsh' page.sh | bash
+	run -0 gmsh -check amoeba-b.msh
+	[[ "$output" != *[Ww]arning* ]]
+	[[ "$output" != *[Ee]rror* ]]
+}
+
 @test "qtmesh(1): the boundary-fitted mesh at level 5 gives the figures it shows" {
 	runexample "$TOP/man/qtmesh.1" 'qtsplit -l 5 | qtbalance | qtmesh -b'
 	[ "$(wc -l < want)" -eq 10 ]
