@@ -465,6 +465,16 @@ if [ -x ./qtmesh ]; then
 	t=$(timeit 3 "./qtmesh $tmp/mesh16.qt")
 	row amoeba - 16 qtmesh "$ne" "$t" "$mem"
 	rm -f "$tmp/mesh16.qt"
+	# qtmesh -b, its angles bounded (-a 20), on the amoeba balanced at 12
+	./qtsplit -l 12 "$tmp/amoeba.qt" | ./qtbalance >"$tmp/b12.qt"
+	peak ./qtmesh -b "$tmp/b12.qt" >"$tmp/b12.out" ||
+		die "qtmesh -b failed"
+	mem=$(rss)
+	ne=$(grep -c '^elem ' "$tmp/b12.out")
+	rm -f "$tmp/b12.out"
+	t=$(timeit 3 "./qtmesh -b $tmp/b12.qt")
+	row amoeba - 12 qtmesh-b "$ne" "$t" "$mem"
+	rm -f "$tmp/b12.qt"
 fi
 
 # Shards over GNU parallel -j 2 against a single run, and what limits it.
@@ -584,6 +594,14 @@ END {
 	if (has(k))
 		verdict(name, sprintf("%.3g M elem/s", cells[k] / sec[k] / 1e6),
 		    cells[k] / sec[k] >= 1e6 ? "PASS" : "FAIL")
+	else
+		skip(name)
+
+	k = "amoeba - 12 qtmesh-b"
+	name = "qtmesh -b, amoeba balanced level 12, >= 0.5 M elements/s (issue 27)"
+	if (has(k))
+		verdict(name, sprintf("%.3g M elem/s", cells[k] / sec[k] / 1e6),
+		    cells[k] / sec[k] >= 5e5 ? "PASS" : "FAIL")
 	else
 		skip(name)
 
