@@ -184,7 +184,8 @@ leafloops(struct mesh *m, const struct leaf *l)
 	c.iy = l->iy;
 	c.class = l->class;
 	c.path = cellpath(path, l->level, l->ix, l->iy);
-	if ((class = cut_cell(b->cutter, &c, &frac)) != l->class)
+	if ((class = cut_cell(b->cutter, &c, &frac)) != l->class &&
+	    !b->hasarcs)
 		errat(m->inname, l->lineno, "leaf %s is %c, but the "
 		    "stream's rings make it %c: the rings are not the "
 		    "tree's", c.path, l->class, class);

@@ -183,7 +183,7 @@ readtree(struct mesh *m, struct qtreader *r)
 			break;
 		case QT_RING:
 			if (m->bfit)
-				bfitring(m, &rec.ring, rec.lineno);
+				keepring(m, &rec.ring, rec.lineno);
 			if (head)
 				qt_ring(&rec.ring);
 			break;
@@ -197,7 +197,9 @@ readtree(struct mesh *m, struct qtreader *r)
 		case QT_NODE:
 			break;
 		case QT_LEAF:
-			if (m->keep & CLASSBIT(rec.c.class))
+			/* with arcs, chords class the leaves again (arcs.c) */
+			if ((m->keep & CLASSBIT(rec.c.class)) ||
+			    (m->bfit && m->b.hasarcs))
 				addleaf(m, &rec);
 			break;
 		case QT_VERTEX:
@@ -261,11 +263,12 @@ main(int argc, char *argv[])
 	inittemplates(&m);
 
 	fp = openin(argc == 1 ? argv[0] : "-", &m.inname);
-	/* cut cells are clipped by straight edges only (lib/cut.c) */
-	r = qt_open(fp, m.inname, QT_NEEDUNIVERSE | (m.bfit ? 0 : QT_ARCS) |
+	r = qt_open(fp, m.inname, QT_NEEDUNIVERSE | QT_ARCS |
 	    (m.verbose ? QT_VERBOSE : 0));
 	readtree(&m, r);
 	qt_close(r);
+	if (m.bfit)
+		chordrings(&m);
 
 	findsides(&m);
 	nv = m.bfit ? bfitmesh(&m) : gridmesh(&m);

@@ -153,6 +153,19 @@ struct bfit {
 	int		 axindexed;
 	struct bend	*bends;
 	size_t		 nbends, bendcap;
+	/* arcs made chords: their circles, and each chord point's arc */
+	struct arcinfo {
+		double		cx, cy, r;
+		struct point	a, b;	/* its ends */
+	}		*arcs;
+	size_t		 narcs, arccap, narcsmade;
+	struct bslot	*arcat;
+	size_t		 arcatcap, narcat;
+	/* the rings as read, until the leaves are known (arcs.c) */
+	struct ring	*kept;
+	long		*keptline;
+	size_t		 nkept, keptcap, keptlinecap;
+	int		 hasarcs;
 };
 
 struct mesh {
@@ -207,6 +220,13 @@ void	 putsides(const struct mesh *, struct sidemap *);
 uint32_t sidering(struct mesh *, uint32_t, uint32_t);
 void	 checkboundary(struct mesh *, int);
 void	 bfitboundary(struct mesh *);
+
+/* arcs.c: -b's rings kept as read, their arcs made chords */
+void	 keepring(struct mesh *, const struct ring *, long);
+void	 chordrings(struct mesh *);
+void	 putarcat(struct bfit *, double, double, uint32_t);
+uint32_t arcchord(const struct bfit *, struct point, struct point,
+	    struct point *);
 
 /* refine.c: -b's triangles refined to the angle bound (-a) */
 void	 refine(struct mesh *);

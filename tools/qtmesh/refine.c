@@ -427,7 +427,8 @@ static int
 splitside(struct refiner *r, uint32_t a, uint32_t b)
 {
 	struct mesh *m = r->m;
-	uint32_t code = sideget(&r->open, a, b), t, k, p, mid, ring, l;
+	uint32_t code = sideget(&r->open, a, b), t, k, p, mid, ring, l, arc;
+	struct point on;
 	int32_t na, nb;
 	uint32_t v[3], u;
 	int32_t n[3];
@@ -445,12 +446,17 @@ splitside(struct refiner *r, uint32_t a, uint32_t b)
 	if ((ring = sidering(m, a, b)) == 0 || r->budget == 0)
 		goto frozen;
 	p = r->t[t].v[k];
-	splitpoint(r, a, b, &x, &y);
+	if ((arc = arcchord(&m->b, *pt(r, a), *pt(r, b), &on)) != 0)
+		x = on.x, y = on.y;	/* a chord of an arc: on the arc */
+	else
+		splitpoint(r, a, b, &x, &y);
 	if (bvfind(&m->b, x, y) != 0 || orient2d(pt(r, p)->x, pt(r, p)->y,
 	    pt(r, a)->x, pt(r, a)->y, x, y) <= 0 || orient2d(pt(r, p)->x,
 	    pt(r, p)->y, x, y, pt(r, b)->x, pt(r, b)->y) <= 0)
 		goto frozen;
 	mid = newvertex(r, x, y);
+	if (arc != 0)
+		putarcat(&m->b, x, y, arc);
 	r->budget--;
 	sideput(&r->open, a, b, 0);
 	sideput(&m->b.ringsides, a, mid, ring);
