@@ -13,13 +13,14 @@ BIN = polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance qtbool
 MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
 	man/qt2svg.1 man/qtcat.1 man/qtmesh.1 man/qtbalance.1 man/qtbool.1
 MAN5 = man/qtree.5
+QTREEH = lib/qtree.h lib/arcfilter.h	# the public header and what it includes
 LIBOBJ = lib/msg.o lib/hugepage.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
 	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
 	lib/pow5.o lib/op.o lib/arc.o lib/cut.o lib/earclip.o
 
 all: $(BIN)
 
-$(LIBOBJ): lib/qtree.h
+$(LIBOBJ): $(QTREEH)
 $(LIBOBJ): lib/internal.h
 lib/libqtree.a: $(LIBOBJ)
 	rm -f $@
@@ -53,7 +54,7 @@ qtstats: tools/qtstats.o
 QT2SVGOBJ = tools/qt2svg/main.o tools/qt2svg/out.o tools/qt2svg/window.o \
 	tools/qt2svg/leaves.o tools/qt2svg/rings.o tools/qt2svg/mesh.o \
 	tools/qt2svg/quality.o tools/qt2svg/legend.o
-$(QT2SVGOBJ): lib/qtree.h tools/qt2svg/qt2svg.h
+$(QT2SVGOBJ): $(QTREEH) tools/qt2svg/qt2svg.h
 qt2svg: $(QT2SVGOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QT2SVGOBJ) lib/libqtree.a $(LDLIBS)
 qtcat: tools/qtcat.o
@@ -64,11 +65,11 @@ qtbalance: tools/qtbalance.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbalance.o lib/libqtree.a $(LDLIBS)
 qtbool: tools/qtbool.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbool.o lib/libqtree.a $(LDLIBS)
-$(POLYREADOBJ): lib/qtree.h tools/polyread/polyread.h
-$(QTMESHOBJ): lib/qtree.h tools/qtmesh/qtmesh.h
+$(POLYREADOBJ): $(QTREEH) tools/polyread/polyread.h
+$(QTMESHOBJ): $(QTREEH) tools/qtmesh/qtmesh.h
 tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
 tools/qtcat.o tools/qtbalance.o \
-tools/qtbool.o: lib/qtree.h
+tools/qtbool.o: $(QTREEH)
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it; numcheck checks parsereal against strtod, numbench

@@ -345,27 +345,27 @@ bigarc(const struct arc *a, struct bigarc *z)
 static void
 filter(struct arc *a)
 {
-	struct interval two = { 2, 2 }, d2 = iv_mul(two, a->id), cx, cy, r2;
+	struct interval two = { 2, 2 }, d2 = iv_mul(two, a->f.id), cx, cy, r2;
 	double ex, ey, rlo, rhi;
 
-	cx = iv_add(widen(a->a.x, a->a.x), iv_div(a->iux, d2));
-	cy = iv_add(widen(a->a.y, a->a.y), iv_div(a->iuy, d2));
-	r2 = iv_div(iv_add(iv_mul(a->iux, a->iux), iv_mul(a->iuy, a->iuy)),
+	cx = iv_add(widen(a->a.x, a->a.x), iv_div(a->f.iux, d2));
+	cy = iv_add(widen(a->a.y, a->a.y), iv_div(a->f.iuy, d2));
+	r2 = iv_div(iv_add(iv_mul(a->f.iux, a->f.iux), iv_mul(a->f.iuy, a->f.iuy)),
 	    iv_mul(d2, d2));
-	a->cx = 0.5 * cx.lo + 0.5 * cx.hi;
-	a->cy = 0.5 * cy.lo + 0.5 * cy.hi;
-	ex = fmax(a->cx - cx.lo, cx.hi - a->cx);
-	ey = fmax(a->cy - cy.lo, cy.hi - a->cy);
-	a->ec = fmax(ex, ey) * (1 + 0x1p-40) + 0x1p-1060;
-	a->tin = -1;
-	a->tout = INFINITY;
-	if (!(a->ec < INFINITY) || !(r2.hi < INFINITY) || !(r2.lo >= 0))
+	a->f.cx = 0.5 * cx.lo + 0.5 * cx.hi;
+	a->f.cy = 0.5 * cy.lo + 0.5 * cy.hi;
+	ex = fmax(a->f.cx - cx.lo, cx.hi - a->f.cx);
+	ey = fmax(a->f.cy - cy.lo, cy.hi - a->f.cy);
+	a->f.ec = fmax(ex, ey) * (1 + 0x1p-40) + 0x1p-1060;
+	a->f.tin = -1;
+	a->f.tout = INFINITY;
+	if (!(a->f.ec < INFINITY) || !(r2.hi < INFINITY) || !(r2.lo >= 0))
 		return;
-	rlo = sqrt(r2.lo) * (1 - 0x1p-40) - 1.5 * a->ec;
-	rhi = sqrt(r2.hi) * (1 + 0x1p-40) + 1.5 * a->ec;
-	a->tout = rhi * rhi * (1 + 0x1p-40);
+	rlo = sqrt(r2.lo) * (1 - 0x1p-40) - 1.5 * a->f.ec;
+	rhi = sqrt(r2.hi) * (1 + 0x1p-40) + 1.5 * a->f.ec;
+	a->f.tout = rhi * rhi * (1 + 0x1p-40);
 	if (rlo > 0)
-		a->tin = rlo * rlo * (1 - 0x1p-40);
+		a->f.tin = rlo * rlo * (1 - 0x1p-40);
 }
 
 int
@@ -380,20 +380,20 @@ arc_init(struct arc *a, struct point pa, struct point pm, struct point pb)
 	a->sd = orient2d(pa.x, pa.y, pb.x, pb.y, pm.x, pm.y);
 	if (a->sd == 0)
 		return -1;
-	a->ibx = iv_diff(pb.x, pa.x);
-	a->iby = iv_diff(pb.y, pa.y);
-	a->imx = iv_diff(pm.x, pa.x);
-	a->imy = iv_diff(pm.y, pa.y);
-	a->id = iv_sub(iv_mul(a->ibx, a->imy), iv_mul(a->iby, a->imx));
-	b2 = iv_add(iv_mul(a->ibx, a->ibx), iv_mul(a->iby, a->iby));
-	m2 = iv_add(iv_mul(a->imx, a->imx), iv_mul(a->imy, a->imy));
-	a->iux = iv_sub(iv_mul(a->imy, b2), iv_mul(a->iby, m2));
-	a->iuy = iv_sub(iv_mul(a->ibx, m2), iv_mul(a->imx, b2));
+	a->f.ibx = iv_diff(pb.x, pa.x);
+	a->f.iby = iv_diff(pb.y, pa.y);
+	a->f.imx = iv_diff(pm.x, pa.x);
+	a->f.imy = iv_diff(pm.y, pa.y);
+	a->f.id = iv_sub(iv_mul(a->f.ibx, a->f.imy), iv_mul(a->f.iby, a->f.imx));
+	b2 = iv_add(iv_mul(a->f.ibx, a->f.ibx), iv_mul(a->f.iby, a->f.iby));
+	m2 = iv_add(iv_mul(a->f.imx, a->f.imx), iv_mul(a->f.imy, a->f.imy));
+	a->f.iux = iv_sub(iv_mul(a->f.imy, b2), iv_mul(a->f.iby, m2));
+	a->f.iuy = iv_sub(iv_mul(a->f.ibx, m2), iv_mul(a->f.imx, b2));
 	a->oc = arc_centreside(a);
 	filter(a);
 	/* a centre on doubles, as most circles given by hand have it */
-	a->exactc[0] = coordok(a->cx) && arc_cmpcentre(a, 0, a->cx) == 0;
-	a->exactc[1] = coordok(a->cy) && arc_cmpcentre(a, 1, a->cy) == 0;
+	a->f.exactc[0] = parsecoordok(a->f.cx) && arc_cmpcentre(a, 0, a->f.cx) == 0;
+	a->f.exactc[1] = parsecoordok(a->f.cy) && arc_cmpcentre(a, 1, a->f.cy) == 0;
 	/*
 	 * The box: A, B and those of the circle's extreme points C +- (r, 0),
 	 * C +- (0, r) that the arc may hold, from the enclosures of C and r:
@@ -402,21 +402,21 @@ arc_init(struct arc *a, struct point pa, struct point pm, struct point pb)
 	 */
 	a->xmin = fmin(pa.x, pb.x), a->xmax = fmax(pa.x, pb.x);
 	a->ymin = fmin(pa.y, pb.y), a->ymax = fmax(pa.y, pb.y);
-	if (!(a->tout < INFINITY) || !(a->ec < INFINITY)) {
+	if (!(a->f.tout < INFINITY) || !(a->f.ec < INFINITY)) {
 		a->xmin = a->ymin = -INFINITY;
 		a->xmax = a->ymax = INFINITY;
 		return 0;
 	}
-	r = sqrt(a->tout) * (1 + 0x1p-40) + a->ec;
+	r = sqrt(a->f.tout) * (1 + 0x1p-40) + a->f.ec;
 	for (k = 0; k < 4; k++) {
 		struct interval ex, ey, o;
 		double dx = k == 0 ? r : k == 1 ? -r : 0;
 		double dy = k == 2 ? r : k == 3 ? -r : 0;
 
-		ex = widen(a->cx + dx - a->ec, a->cx + dx + a->ec);
-		ey = widen(a->cy + dy - a->ec, a->cy + dy + a->ec);
-		o = iv_sub(iv_mul(a->ibx, iv_sub(ey, widen(pa.y, pa.y))),
-		    iv_mul(a->iby, iv_sub(ex, widen(pa.x, pa.x))));
+		ex = widen(a->f.cx + dx - a->f.ec, a->f.cx + dx + a->f.ec);
+		ey = widen(a->f.cy + dy - a->f.ec, a->f.cy + dy + a->f.ec);
+		o = iv_sub(iv_mul(a->f.ibx, iv_sub(ey, widen(pa.y, pa.y))),
+		    iv_mul(a->f.iby, iv_sub(ex, widen(pa.x, pa.x))));
 		if (iv_sign(o) == -a->sd)
 			continue;
 		a->xmin = fmin(a->xmin, ex.lo), a->xmax = fmax(a->xmax, ex.hi);
@@ -436,17 +436,17 @@ powerat(const struct arc *a, double x, double y)
 	struct xsum t;
 	int s;
 
-	xs_init(&t);
-	xs_addprod(&t, x, x);
-	xs_addprod(&t, -2 * x, a->cx);
-	xs_addprod(&t, y, y);
-	xs_addprod(&t, -2 * y, a->cy);
-	xs_addprod(&t, -a->a.x, a->a.x);
-	xs_addprod(&t, 2 * a->a.x, a->cx);
-	xs_addprod(&t, -a->a.y, a->a.y);
-	xs_addprod(&t, 2 * a->a.y, a->cy);
-	s = xs_sign(&t);
-	xs_free(&t);
+	area_init(&t);
+	area_addprod(&t, x, x);
+	area_addprod(&t, -2 * x, a->f.cx);
+	area_addprod(&t, y, y);
+	area_addprod(&t, -2 * y, a->f.cy);
+	area_addprod(&t, -a->a.x, a->a.x);
+	area_addprod(&t, 2 * a->a.x, a->f.cx);
+	area_addprod(&t, -a->a.y, a->a.y);
+	area_addprod(&t, 2 * a->a.y, a->f.cy);
+	s = area_sign(&t);
+	area_free(&t);
 	return s;
 }
 
@@ -472,17 +472,17 @@ arc_power(const struct arc *a, double x, double y)
 	struct interval px, py, v;
 	struct bigarc z;
 	struct big bx, by, t, u;
-	double dx = x - a->cx, dy = y - a->cy;
+	double dx = x - a->f.cx, dy = y - a->f.cy;
 	int s;
 
-	if ((s = powerfilter(dx * dx + dy * dy, a->tin, a->tout)) != 0)
+	if ((s = powerfilter(dx * dx + dy * dy, a->f.tin, a->f.tout)) != 0)
 		return s;
 	px = iv_diff(x, a->a.x), py = iv_diff(y, a->a.y);
-	v = iv_sub(iv_mul(a->id, iv_add(iv_mul(px, px), iv_mul(py, py))),
-	    iv_add(iv_mul(px, a->iux), iv_mul(py, a->iuy)));
+	v = iv_sub(iv_mul(a->f.id, iv_add(iv_mul(px, px), iv_mul(py, py))),
+	    iv_add(iv_mul(px, a->f.iux), iv_mul(py, a->f.iuy)));
 	if ((s = iv_sign(v)) != 0)
 		return s * a->sd;
-	if (a->exactc[0] && a->exactc[1])
+	if (a->f.exactc[0] && a->f.exactc[1])
 		return powerat(a, x, y);
 	bigarc(a, &z);
 	big_diff(&bx, x, a->a.x);
@@ -507,11 +507,11 @@ arc_powergrid(const struct arc *a, const double gx[3], const double gy[3],
     signed char f[9])
 {
 	/* copies: a store to f, chars, could change *a for all C knows */
-	double dx2[3], dy2[3], tin = a->tin, tout = a->tout;
+	double dx2[3], dy2[3], tin = a->f.tin, tout = a->f.tout;
 	int i, j;
 
 	for (i = 0; i < 3; i++) {
-		double dx = gx[i] - a->cx, dy = gy[i] - a->cy;
+		double dx = gx[i] - a->f.cx, dy = gy[i] - a->f.cy;
 
 		dx2[i] = dx * dx;
 		dy2[i] = dy * dy;
@@ -532,14 +532,14 @@ int
 arc_cmpcentre(const struct arc *a, int axis, double v)
 {
 	struct interval p = axis ? iv_diff(v, a->a.y) : iv_diff(v, a->a.x);
-	struct interval w = iv_sub(iv_scale(iv_mul(a->id, p), 2),
-	    axis ? a->iuy : a->iux);
+	struct interval w = iv_sub(iv_scale(iv_mul(a->f.id, p), 2),
+	    axis ? a->f.iuy : a->f.iux);
 	struct bigarc z;
 	struct big b, t;
 	int s;
 
-	if (a->exactc[axis]) {
-		double c = axis ? a->cy : a->cx;
+	if (a->f.exactc[axis]) {
+		double c = axis ? a->f.cy : a->f.cx;
 
 		return (v > c) - (v < c);
 	}
@@ -561,8 +561,8 @@ static int
 nudge2(const struct arc *a, double y)
 {
 	struct interval p = iv_diff(y, a->a.y), one = { 1, 1 };
-	struct interval w = iv_sub(iv_mul(a->id, iv_add(one, iv_scale(p, 2))),
-	    a->iuy);
+	struct interval w = iv_sub(iv_mul(a->f.id, iv_add(one, iv_scale(p, 2))),
+	    a->f.iuy);
 	struct bigarc z;
 	struct big b, t;
 	int s;
@@ -587,8 +587,8 @@ int
 arc_powerline(const struct arc *a, int axis, double v)
 {
 	struct interval p = axis ? iv_diff(v, a->a.y) : iv_diff(v, a->a.x);
-	struct interval u = axis ? a->iuy : a->iux, o = axis ? a->iux : a->iuy;
-	struct interval dp = iv_scale(iv_mul(a->id, p), 2);
+	struct interval u = axis ? a->f.iuy : a->f.iux, o = axis ? a->f.iux : a->f.iuy;
+	struct interval dp = iv_scale(iv_mul(a->f.id, p), 2);
 	struct interval w = iv_sub(iv_mul(dp, iv_sub(dp, iv_scale(u, 2))),
 	    iv_mul(o, o));
 	struct bigarc z;
@@ -623,13 +623,13 @@ arc_orientline(const struct arc *a, int axis, double v)
 	int s;
 
 	if (axis == 0)
-		w = iv_sub(iv_mul(a->ibx, a->iuy), iv_scale(iv_mul(a->id,
-		    iv_mul(a->iby, iv_diff(v, a->a.x))), 2));
+		w = iv_sub(iv_mul(a->f.ibx, a->f.iuy), iv_scale(iv_mul(a->f.id,
+		    iv_mul(a->f.iby, iv_diff(v, a->a.x))), 2));
 	else if (axis == 1)
-		w = iv_sub(iv_scale(iv_mul(a->id, iv_mul(a->ibx, iv_diff(v,
-		    a->a.y))), 2), iv_mul(a->iby, a->iux));
+		w = iv_sub(iv_scale(iv_mul(a->f.id, iv_mul(a->f.ibx, iv_diff(v,
+		    a->a.y))), 2), iv_mul(a->f.iby, a->f.iux));
 	else
-		w = iv_sub(iv_mul(a->ibx, a->iuy), iv_mul(a->iby, a->iux));
+		w = iv_sub(iv_mul(a->f.ibx, a->f.iuy), iv_mul(a->f.iby, a->f.iux));
 	if ((s = iv_sign(w)) != 0)
 		return s * a->sd;
 	bigarc(a, &z);
@@ -752,14 +752,14 @@ arc_nearpower(const struct arc *a, double x0, double y0, double x1,
 	double zx = 0, zy = 0;
 
 	{	/* the disc surely misses K: the filter of arc_power */
-		double l = x0 - a->cx, r = a->cx - x1, b = y0 - a->cy;
-		double t = a->cy - y1;
+		double l = x0 - a->f.cx, r = a->f.cx - x1, b = y0 - a->f.cy;
+		double t = a->f.cy - y1;
 		/* comparisons, not fmax, which libm does not inline */
-		double dx = (l > r ? l : r) - a->ec, dy = (b > t ? b : t) - a->ec;
+		double dx = (l > r ? l : r) - a->f.ec, dy = (b > t ? b : t) - a->f.ec;
 
 		dx = dx > 0 ? dx : 0;
 		dy = dy > 0 ? dy : 0;
-		if ((dx * dx + dy * dy) * (1 - 0x1p-40) > a->tout + 0x1p-1000)
+		if ((dx * dx + dy * dy) * (1 - 0x1p-40) > a->f.tout + 0x1p-1000)
 			return 1;
 	}
 	/* z: the centre clamped to K, by coordinates */
@@ -799,16 +799,16 @@ int
 arc_boxoff(const struct arc *a, double x0, double y0, double x1, double y1)
 {
 	/* comparisons, not fmax, which libm does not inline */
-	double l = a->cx - x0, r = x1 - a->cx, b = a->cy - y0, t = y1 - a->cy;
-	double nx = (l < 0 ? -l : r < 0 ? -r : 0) - a->ec;
-	double ny = (b < 0 ? -b : t < 0 ? -t : 0) - a->ec;
-	double fx = (l > r ? l : r) + a->ec, fy = (b > t ? b : t) + a->ec;
+	double l = a->f.cx - x0, r = x1 - a->f.cx, b = a->f.cy - y0, t = y1 - a->f.cy;
+	double nx = (l < 0 ? -l : r < 0 ? -r : 0) - a->f.ec;
+	double ny = (b < 0 ? -b : t < 0 ? -t : 0) - a->f.ec;
+	double fx = (l > r ? l : r) + a->f.ec, fy = (b > t ? b : t) + a->f.ec;
 
 	nx = nx > 0 ? nx : 0;
 	ny = ny > 0 ? ny : 0;
-	if ((nx * nx + ny * ny) * (1 - 0x1p-40) > a->tout + 0x1p-1000)
+	if ((nx * nx + ny * ny) * (1 - 0x1p-40) > a->f.tout + 0x1p-1000)
 		return 1;
-	return (fx * fx + fy * fy) * (1 + 0x1p-40) + 0x1p-1000 < a->tin;
+	return (fx * fx + fy * fy) * (1 + 0x1p-40) + 0x1p-1000 < a->f.tin;
 }
 
 /*
@@ -831,7 +831,7 @@ arc_measures(const struct arc *a, struct arcmeasures *g)
 	double nx = -by / lb * a->sd, ny = bx / lb * a->sd;
 
 	/* h: C's distance from the chord, positive away from the arc */
-	h = -((a->cx - (a->a.x + bx / 2)) * nx + (a->cy - (a->a.y + by / 2)) *
+	h = -((a->f.cx - (a->a.x + bx / 2)) * nx + (a->f.cy - (a->a.y + by / 2)) *
 	    ny);
 	al = atan2(c, h);
 	r = hypot(c, h);
@@ -893,7 +893,7 @@ big_dot(struct big *z, const struct big *ux, const struct big *uy,
 
 /* The sign of cross(b - a, d - c): which way the direction c->d turns. */
 int
-crossdir(struct point a, struct point b, struct point c, struct point d)
+arc_crossdir(struct point a, struct point b, struct point c, struct point d)
 {
 	struct interval w = iv_sub(iv_mul(iv_diff(b.x, a.x), iv_diff(d.y,
 	    c.y)), iv_mul(iv_diff(b.y, a.y), iv_diff(d.x, c.x)));
@@ -918,9 +918,9 @@ int
 arc_dotcentre(const struct arc *a, struct point p, struct point q)
 {
 	struct interval dx = iv_diff(q.x, p.x), dy = iv_diff(q.y, p.y);
-	struct interval w = iv_add(iv_scale(iv_mul(a->id, iv_add(iv_mul(
+	struct interval w = iv_add(iv_scale(iv_mul(a->f.id, iv_add(iv_mul(
 	    iv_diff(a->a.x, p.x), dx), iv_mul(iv_diff(a->a.y, p.y), dy))), 2),
-	    iv_add(iv_mul(a->iux, dx), iv_mul(a->iuy, dy)));
+	    iv_add(iv_mul(a->f.iux, dx), iv_mul(a->f.iuy, dy)));
 	struct bigarc z;
 	struct big ex, ey, bdx, bdy, t, u;
 	int s;
@@ -956,12 +956,12 @@ arc_dotcentrecut(const struct arc *a, struct point p, struct point q)
 	struct big bex, bey, bdx, bdy, bk, bo, t, u;
 	int s;
 
-	e = iv_add(iv_scale(iv_mul(a->id, iv_add(iv_mul(ex, dx),
-	    iv_mul(ey, dy))), 2), iv_add(iv_mul(a->iux, dx),
-	    iv_mul(a->iuy, dy)));
-	k = iv_sub(iv_mul(a->iby, dx), iv_mul(a->ibx, dy));
-	o0 = iv_sub(zero, iv_sub(iv_mul(a->ibx, ey), iv_mul(a->iby, ex)));
-	w = iv_sub(iv_mul(e, k), iv_scale(iv_mul(iv_mul(a->id, o0),
+	e = iv_add(iv_scale(iv_mul(a->f.id, iv_add(iv_mul(ex, dx),
+	    iv_mul(ey, dy))), 2), iv_add(iv_mul(a->f.iux, dx),
+	    iv_mul(a->f.iuy, dy)));
+	k = iv_sub(iv_mul(a->f.iby, dx), iv_mul(a->f.ibx, dy));
+	o0 = iv_sub(zero, iv_sub(iv_mul(a->f.ibx, ey), iv_mul(a->f.iby, ex)));
+	w = iv_sub(iv_mul(e, k), iv_scale(iv_mul(iv_mul(a->f.id, o0),
 	    iv_add(iv_mul(dx, dx), iv_mul(dy, dy))), 2));
 	if ((s = iv_sign(w)) != 0 && iv_sign(k) != 0)
 		return s * iv_sign(k) * a->sd;
@@ -1001,10 +1001,10 @@ arc_linepower(const struct arc *a, struct point p, struct point q)
 	struct big bex, bey, bdx, bdy, t, u;
 	int s;
 
-	c = iv_add(iv_scale(iv_mul(a->id, iv_sub(iv_mul(dx, ey), iv_mul(dy,
-	    ex))), 2), iv_sub(iv_mul(dx, a->iuy), iv_mul(dy, a->iux)));
-	w = iv_sub(iv_mul(c, c), iv_mul(iv_add(iv_mul(a->iux, a->iux),
-	    iv_mul(a->iuy, a->iuy)), iv_add(iv_mul(dx, dx), iv_mul(dy, dy))));
+	c = iv_add(iv_scale(iv_mul(a->f.id, iv_sub(iv_mul(dx, ey), iv_mul(dy,
+	    ex))), 2), iv_sub(iv_mul(dx, a->f.iuy), iv_mul(dy, a->f.iux)));
+	w = iv_sub(iv_mul(c, c), iv_mul(iv_add(iv_mul(a->f.iux, a->f.iux),
+	    iv_mul(a->f.iuy, a->f.iuy)), iv_add(iv_mul(dx, dx), iv_mul(dy, dy))));
 	if ((s = iv_sign(w)) != 0)
 		return s;
 	bigarc(a, &z);
@@ -1038,14 +1038,14 @@ arc_tangentcross(const struct arc *a1, const struct arc *a2, struct point v)
 	struct big p1x, p1y, p2x, p2y, t;
 	int s;
 
-	w1x = iv_sub(iv_scale(iv_mul(a1->id, iv_diff(v.x, a1->a.x)), 2),
-	    a1->iux);
-	w1y = iv_sub(iv_scale(iv_mul(a1->id, iv_diff(v.y, a1->a.y)), 2),
-	    a1->iuy);
-	w2x = iv_sub(iv_scale(iv_mul(a2->id, iv_diff(v.x, a2->a.x)), 2),
-	    a2->iux);
-	w2y = iv_sub(iv_scale(iv_mul(a2->id, iv_diff(v.y, a2->a.y)), 2),
-	    a2->iuy);
+	w1x = iv_sub(iv_scale(iv_mul(a1->f.id, iv_diff(v.x, a1->a.x)), 2),
+	    a1->f.iux);
+	w1y = iv_sub(iv_scale(iv_mul(a1->f.id, iv_diff(v.y, a1->a.y)), 2),
+	    a1->f.iuy);
+	w2x = iv_sub(iv_scale(iv_mul(a2->f.id, iv_diff(v.x, a2->a.x)), 2),
+	    a2->f.iux);
+	w2y = iv_sub(iv_scale(iv_mul(a2->f.id, iv_diff(v.y, a2->a.y)), 2),
+	    a2->f.iuy);
 	w = iv_sub(iv_mul(w2x, w1y), iv_mul(w2y, w1x));
 	if ((s = iv_sign(w)) != 0)
 		return s * a1->sd * a2->sd;

@@ -10,7 +10,7 @@
 
 /* Cell corners as qtree(5) defines them: x0 + i * h in double arithmetic. */
 double
-cellcoord(double x0, double size, int level, uint64_t i)
+cell_coord(double x0, double size, int level, uint64_t i)
 {
 	double h = ldexp(size, -level);
 
@@ -19,7 +19,7 @@ cellcoord(double x0, double size, int level, uint64_t i)
 
 /*
  * The range rule of qtree(5), axis by axis.  A universe's corners on one
- * axis are a0 and a0 + size, both zero or of a magnitude coordok takes.
+ * axis are a0 and a0 + size, both zero or of a magnitude parsecoordok takes.
  * At level L, h = size / 2^L and corner i is c(i) = fl(a0 + fl(i h)),
  * which never decreases with i (each rounding is monotone).  The level is
  * within reach when three things hold:
@@ -57,13 +57,13 @@ firstnonneg(double a0, double size, int level, int strict)
 	uint64_t lo = 0, hi = (uint64_t)1 << level, mid;
 
 	/* c(lo) is below, c(hi) not: c(2^level) >= 0 when called */
-	if (strict && !(cellcoord(a0, size, level, hi) > 0))
+	if (strict && !(cell_coord(a0, size, level, hi) > 0))
 		return hi + 1;
 	while (hi - lo > 1) {
 		double c;
 
 		mid = lo + (hi - lo) / 2;
-		c = cellcoord(a0, size, level, mid);
+		c = cell_coord(a0, size, level, mid);
 		if (strict ? c > 0 : c >= 0)
 			hi = mid;
 		else
@@ -90,17 +90,17 @@ axisbreaks(double a0, double size, int level)
 		return "cells would be smaller than 1e-100";
 	if (a0 < 0 && far >= 0) {
 		i = firstnonneg(a0, size, level, 0);
-		if (-cellcoord(a0, size, level, i - 1) < QT_COORD_MIN)
+		if (-cell_coord(a0, size, level, i - 1) < QT_COORD_MIN)
 			return "a cell corner would lie nearer 0 than 1e-100";
 		i = firstnonneg(a0, size, level, 1);
-		if (i <= n && cellcoord(a0, size, level, i) < QT_COORD_MIN)
+		if (i <= n && cell_coord(a0, size, level, i) < QT_COORD_MIN)
 			return "a cell corner would lie nearer 0 than 1e-100";
 	}
 	return NULL;
 }
 
 int
-univdeepest(const struct universe *u, char *why, size_t n)
+cell_univdeepest(const struct universe *u, char *why, size_t n)
 {
 	static const char *const name[] = { "x0", "y0", "size", "x0 + size",
 	    "y0 + size" };
@@ -115,7 +115,7 @@ univdeepest(const struct universe *u, char *why, size_t n)
 	v[3] = u->x0 + u->size;
 	v[4] = u->y0 + u->size;
 	for (i = 0; i < 5; i++)
-		if (!coordok(v[i]) || (i == 2 && v[i] <= 0)) {
+		if (!parsecoordok(v[i]) || (i == 2 && v[i] <= 0)) {
 			if (why != NULL) {
 				fmtreal(buf, v[i]);
 				snprintf(why, n, "its %s, %s, %s", name[i], buf,
@@ -136,11 +136,11 @@ univdeepest(const struct universe *u, char *why, size_t n)
 }
 
 const char *
-univcheck(const struct universe *u, int level)
+cell_univcheck(const struct universe *u, int level)
 {
 	static char msg[512];
 	char why[128], x0[32], y0[32], size[32];
-	int deepest = univdeepest(u, why, sizeof(why));
+	int deepest = cell_univdeepest(u, why, sizeof(why));
 
 	if (deepest >= 0 && level <= deepest)
 		return NULL;
@@ -159,7 +159,7 @@ univcheck(const struct universe *u, int level)
 
 /* Column and row of a path; -1 when the path is malformed for its level. */
 int
-pathcell(const char *path, int level, uint64_t *ix, uint64_t *iy)
+cell_frompath(const char *path, int level, uint64_t *ix, uint64_t *iy)
 {
 	int i;
 
@@ -204,7 +204,7 @@ firstdiff(uint64_t x, uint64_t y)
  * two, so they are compared eight bytes at a time, the last eight too.
  */
 int
-pathprefix(const char *a, int na, const char *b, int nb)
+cell_pathprefix(const char *a, int na, const char *b, int nb)
 {
 	int k = 0, n = na < nb ? na : nb;
 	uint64_t x, y;
@@ -228,10 +228,10 @@ pathprefix(const char *a, int na, const char *b, int nb)
 
 /*
  * The leaf classes a -c option names, a word of F, E and P in any order,
- * as a set of CLASSBIT bits; a bad word is a usage error.
+ * as a set of CELL_CLASSBIT bits; a bad word is a usage error.
  */
 unsigned
-optclasses(const char *arg)
+cell_optclasses(const char *arg)
 {
 	const char *p;
 	unsigned set = 0;
@@ -239,9 +239,9 @@ optclasses(const char *arg)
 	if (*arg == '\0')
 		die(2, "-c: no classes given (a word of F, E and P)");
 	for (p = arg; *p != '\0'; p++) {
-		if (CLASSBIT(*p) == 0)
+		if (CELL_CLASSBIT(*p) == 0)
 			die(2, "-c: unknown class %c (F, E or P)", *p);
-		set |= CLASSBIT(*p);
+		set |= CELL_CLASSBIT(*p);
 	}
 	return set;
 }
@@ -254,7 +254,7 @@ optclasses(const char *arg)
  * the level of their deepest common ancestor.
  */
 int
-cellcmp(const struct cell *a, const struct cell *b)
+cell_cmp(const struct cell *a, const struct cell *b)
 {
 	int l = a->level < b->level ? a->level : b->level;
 	uint64_t ax = a->ix >> (a->level - l), ay = a->iy >> (a->level - l);

@@ -121,7 +121,7 @@ side_nudged(struct point a, struct point b, struct point c, struct point d)
  * that a ray through a vertex counts it once or not at all.
  */
 int
-ray_crosses(struct point a, struct point b, struct point p,
+geom_raycrosses(struct point a, struct point b, struct point p,
     struct point toward)
 {
 	int aabove, babove;
@@ -147,20 +147,20 @@ ray_crosses(struct point a, struct point b, struct point p,
  * edge.
  */
 int
-ring_contains(const struct point *v, size_t n, struct point p,
+geom_ringcontains(const struct point *v, size_t n, struct point p,
     struct point toward)
 {
 	size_t i, j;
 	int inside = 0;
 
 	for (i = 0, j = n - 1; i < n; j = i++)
-		inside ^= ray_crosses(v[j], v[i], p, toward);
+		inside ^= geom_raycrosses(v[j], v[i], p, toward);
 	return inside;
 }
 
 /* Points in order by x, then y: for qsort and bsearch. */
 int
-point_cmp(const void *va, const void *vb)
+geom_pointcmp(const void *va, const void *vb)
 {
 	const struct point *a = va, *b = vb;
 

@@ -473,7 +473,7 @@ parselong(const char *s, const char **end, long long *out)
 
 /* Coordinates are zero or of a magnitude the exact predicates can take. */
 int
-coordok(double v)
+parsecoordok(double v)
 {
 	double a = fabs(v);
 

@@ -162,7 +162,7 @@ realfield(struct qtreader *r, const char *s, const char *what)
 		qt_fail(r, "%s out of range: %s", what, s);
 	if (rc < 0 || *end != '\0')
 		qt_fail(r, "%s is not a number: %s", what, s);
-	if (!coordok(v))
+	if (!parsecoordok(v))
 		qt_fail(r, "%s outside the supported range "
 		    "(0 or 1e-100 to 1e100 in magnitude): %s", what, s);
 	return v;
@@ -336,10 +336,10 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 		qt_fail(r, "%s record before the universe record", tag);
 	level = intfield(r, r->field[2], "level", 0, QT_MAXLEVEL);
 	if (level > r->ulevels)
-		qt_fail(r, "%s", univcheck(&r->u, level));
-	if (pathcell(path, level, &ix, &iy) < 0)
+		qt_fail(r, "%s", cell_univcheck(&r->u, level));
+	if (cell_frompath(path, level, &ix, &iy) < 0)
 		qt_fail(r, "path %s does not fit level %d", path, level);
-	k = level > 0 ? pathprefix(path, level, r->path, r->pathlen) : 0;
+	k = level > 0 ? cell_pathprefix(path, level, r->path, r->pathlen) : 0;
 	switch (r->flags & QT_UNSEALED ? FOLLOWS :
 	    cellorder(r, level > 0 ? path : "", level, k)) {
 	case INLEAF:
@@ -419,7 +419,7 @@ fastpath(struct qtreader *r, const char **pp, const char *end, uint64_t *ix,
 		*common = 0;
 		return 0;
 	}
-	k = pathprefix(p, (int)(end - p), r->path, r->pathlen);
+	k = cell_pathprefix(p, (int)(end - p), r->path, r->pathlen);
 	/* the prefixes past k are the new path's from here on */
 	for (j = k; (d = (unsigned char)p[j] - '0') <= 3 && j < QT_MAXLEVEL;
 	    j++) {
@@ -571,9 +571,9 @@ universerec(struct qtreader *r, struct qtrec *rec)
 	rec->u.size = realfield(r, r->field[3], "size");
 	if (rec->u.size <= 0)
 		qt_fail(r, "universe size is not positive");
-	if ((msg = univcheck(&rec->u, r->havelevel ? r->level : -1)) != NULL)
+	if ((msg = cell_univcheck(&rec->u, r->havelevel ? r->level : -1)) != NULL)
 		qt_fail(r, "%s", msg);
-	r->ulevels = univdeepest(&rec->u, NULL, 0);
+	r->ulevels = cell_univdeepest(&rec->u, NULL, 0);
 	r->u = rec->u;
 	r->haveuniverse = 1;
 	r->text = celltext_open(&r->u);
@@ -590,7 +590,7 @@ levelrec(struct qtreader *r, struct qtrec *rec)
 	if (r->havecells)
 		qt_fail(r, "level record after cells");
 	rec->level = intfield(r, r->field[1], "level", 0, QT_MAXLEVEL);
-	if (r->haveuniverse && (msg = univcheck(&r->u, rec->level)) != NULL)
+	if (r->haveuniverse && (msg = cell_univcheck(&r->u, rec->level)) != NULL)
 		qt_fail(r, "%s", msg);
 	r->level = rec->level;
 	r->havelevel = 1;
@@ -657,7 +657,7 @@ oprec(struct qtreader *r, struct qtrec *rec)
 		qt_fail(r, "op record after cells");
 	if (r->haveop)
 		qt_fail(r, "second op record");
-	if ((msg = qt_opterms(r->field + 1, r->nfield - 1, r->nobjects,
+	if ((msg = op_terms(r->field + 1, r->nfield - 1, r->nobjects,
 	    r->opterm)) != NULL)
 		qt_fail(r, "%s", msg);
 	rec->op.n = r->nfield - 1;

@@ -212,7 +212,7 @@ nextcell(struct input *p)
 		case QT_EOF:
 			if (!nextstream(p))
 				return 0;
-			if (cellcmp(&prev, &p->rec.c) > 0)
+			if (cell_cmp(&prev, &p->rec.c) > 0)
 				errat(p->name, p->rec.lineno, "cell %s comes "
 				    "before cell %s (line %ld) in preorder: "
 				    "an input's streams must follow each other "
@@ -413,7 +413,7 @@ endtree(void)
 static int
 before(const struct input *a, const struct input *b)
 {
-	int d = cellcmp(&a->rec.c, &b->rec.c);
+	int d = cell_cmp(&a->rec.c, &b->rec.c);
 
 	return d < 0 || (d == 0 && a < b);
 }
@@ -492,7 +492,7 @@ heldcmp(const void *va, const void *vb)
 	cb.level = b->level;
 	cb.ix = b->ix;
 	cb.iy = b->iy;
-	if ((d = cellcmp(&ca, &cb)) != 0)
+	if ((d = cell_cmp(&ca, &cb)) != 0)
 		return d;
 	if (a->input != b->input)
 		return a->input < b->input ? -1 : 1;
@@ -537,7 +537,7 @@ main(int argc, char *argv[])
 	size_t j;
 	int ch, i, nstdin = 0;
 
-	setprogname_(argv[0]);
+	xsetprogname(argv[0]);
 	while ((ch = getopt(argc, argv, "uh")) != -1)
 		switch (ch) {
 		case 'u':

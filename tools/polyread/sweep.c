@@ -840,7 +840,7 @@ checkedges(struct input *input, size_t *ntouch)
 	if (n >= NONE)
 		die(1, "more than %lu vertices", (unsigned long)NONE - 1);
 	edges = xreallocarray(NULL, n + 1, sizeof(*edges));
-	hugepages(edges, (n + 1) * sizeof(*edges));	/* probed at random */
+	hugepage_hint(edges, (n + 1) * sizeof(*edges));	/* probed at random */
 	n = 0;
 	for (i = 0; i < in->nrings; i++)
 		for (j = 0; j < rings[i].n; j++) {
