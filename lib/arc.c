@@ -31,17 +31,20 @@
 
 #include "qtree.h"
 
-/* Integers of at most BIGN 32-bit limbs, sign and magnitude. */
+/*
+ * Big integers, bigint: at most BIGN 32-bit limbs, sign and magnitude
+ * (lib/parse.c has naturals of its own, bignat, for decimals).
+ */
 #define BIGSHIFT	400
 #define BIGN		384
 
-struct big {
+struct bigint {
 	int		 neg, n;	/* n limbs, the top one nonzero */
 	uint32_t	 d[BIGN];
 };
 
 static void
-big_fromdouble(struct big *z, double v)
+bigint_fromdouble(struct bigint *z, double v)
 {
 	int e, s, w, b;
 	uint64_t m;
@@ -65,7 +68,7 @@ big_fromdouble(struct big *z, double v)
 }
 
 static int
-mag_cmp(const struct big *a, const struct big *b)
+bigint_magcmp(const struct bigint *a, const struct bigint *b)
 {
 	int i;
 
@@ -79,7 +82,7 @@ mag_cmp(const struct big *a, const struct big *b)
 
 /* |z| = |a| + |b| */
 static void
-mag_add(struct big *z, const struct big *a, const struct big *b)
+bigint_magadd(struct bigint *z, const struct bigint *a, const struct bigint *b)
 {
 	uint64_t c = 0;
 	int i, n = a->n > b->n ? a->n : b->n;
@@ -97,7 +100,7 @@ mag_add(struct big *z, const struct big *a, const struct big *b)
 
 /* |z| = |a| - |b|, |a| >= |b| */
 static void
-mag_sub(struct big *z, const struct big *a, const struct big *b)
+bigint_magsub(struct bigint *z, const struct bigint *a, const struct bigint *b)
 {
 	int64_t c = 0;
 	int i;
@@ -114,20 +117,20 @@ mag_sub(struct big *z, const struct big *a, const struct big *b)
 
 /* z = a + s b, s = 1 or -1; z may be a or b. */
 static void
-big_addsub(struct big *z, const struct big *a, const struct big *b, int s)
+bigint_addsub(struct bigint *z, const struct bigint *a, const struct bigint *b, int s)
 {
 	int bneg = s < 0 ? !b->neg : b->neg;
 
 	if (a->neg == bneg) {
-		mag_add(z, a, b);
+		bigint_magadd(z, a, b);
 		z->neg = bneg;
-	} else if (mag_cmp(a, b) >= 0) {
+	} else if (bigint_magcmp(a, b) >= 0) {
 		int neg = a->neg;
 
-		mag_sub(z, a, b);
+		bigint_magsub(z, a, b);
 		z->neg = neg;
 	} else {
-		mag_sub(z, b, a);
+		bigint_magsub(z, b, a);
 		z->neg = bneg;
 	}
 	if (z->n == 0)
@@ -135,7 +138,7 @@ big_addsub(struct big *z, const struct big *a, const struct big *b, int s)
 }
 
 static void
-big_mul(struct big *z, const struct big *a, const struct big *b)
+bigint_mul(struct bigint *z, const struct bigint *a, const struct bigint *b)
 {
 	uint32_t t[BIGN];
 	int i, j, n = a->n + b->n;
@@ -167,19 +170,19 @@ big_mul(struct big *z, const struct big *a, const struct big *b)
 }
 
 static int
-big_sign(const struct big *a)
+bigint_sign(const struct bigint *a)
 {
 	return a->n == 0 ? 0 : a->neg ? -1 : 1;
 }
 
 static void
-big_diff(struct big *z, double a, double b)
+bigint_diff(struct bigint *z, double a, double b)
 {
-	struct big t;
+	struct bigint t;
 
-	big_fromdouble(z, a);
-	big_fromdouble(&t, b);
-	big_addsub(z, z, &t, -1);
+	bigint_fromdouble(z, a);
+	bigint_fromdouble(&t, b);
+	bigint_addsub(z, z, &t, -1);
 }
 
 /*
@@ -262,12 +265,12 @@ iv_sign(struct interval a)
 
 /* The arc's quantities in integers, for the exact fallback. */
 struct bigarc {
-	struct big	 bx, by, mx, my, d, ux, uy;
+	struct bigint	 bx, by, mx, my, d, ux, uy;
 };
 
 /* z / 2^s, z a multiple of 2^s */
 static void
-big_shr(struct big *z, int s)
+bigint_shr(struct bigint *z, int s)
 {
 	int w = s / 32, b = s % 32, i;
 
@@ -303,31 +306,31 @@ lowbit(double v)
 static void
 bigarcshift(const struct arc *a, struct bigarc *z, int s)
 {
-	struct big b2, m2, t;
+	struct bigint b2, m2, t;
 
-	big_diff(&z->bx, a->b.x, a->a.x);
-	big_diff(&z->by, a->b.y, a->a.y);
-	big_diff(&z->mx, a->m.x, a->a.x);
-	big_diff(&z->my, a->m.y, a->a.y);
-	big_shr(&z->bx, s);
-	big_shr(&z->by, s);
-	big_shr(&z->mx, s);
-	big_shr(&z->my, s);
-	big_mul(&z->d, &z->bx, &z->my);
-	big_mul(&t, &z->by, &z->mx);
-	big_addsub(&z->d, &z->d, &t, -1);
-	big_mul(&b2, &z->bx, &z->bx);
-	big_mul(&t, &z->by, &z->by);
-	big_addsub(&b2, &b2, &t, 1);
-	big_mul(&m2, &z->mx, &z->mx);
-	big_mul(&t, &z->my, &z->my);
-	big_addsub(&m2, &m2, &t, 1);
-	big_mul(&z->ux, &z->my, &b2);
-	big_mul(&t, &z->by, &m2);
-	big_addsub(&z->ux, &z->ux, &t, -1);
-	big_mul(&z->uy, &z->bx, &m2);
-	big_mul(&t, &z->mx, &b2);
-	big_addsub(&z->uy, &z->uy, &t, -1);
+	bigint_diff(&z->bx, a->b.x, a->a.x);
+	bigint_diff(&z->by, a->b.y, a->a.y);
+	bigint_diff(&z->mx, a->m.x, a->a.x);
+	bigint_diff(&z->my, a->m.y, a->a.y);
+	bigint_shr(&z->bx, s);
+	bigint_shr(&z->by, s);
+	bigint_shr(&z->mx, s);
+	bigint_shr(&z->my, s);
+	bigint_mul(&z->d, &z->bx, &z->my);
+	bigint_mul(&t, &z->by, &z->mx);
+	bigint_addsub(&z->d, &z->d, &t, -1);
+	bigint_mul(&b2, &z->bx, &z->bx);
+	bigint_mul(&t, &z->by, &z->by);
+	bigint_addsub(&b2, &b2, &t, 1);
+	bigint_mul(&m2, &z->mx, &z->mx);
+	bigint_mul(&t, &z->my, &z->my);
+	bigint_addsub(&m2, &m2, &t, 1);
+	bigint_mul(&z->ux, &z->my, &b2);
+	bigint_mul(&t, &z->by, &m2);
+	bigint_addsub(&z->ux, &z->ux, &t, -1);
+	bigint_mul(&z->uy, &z->bx, &m2);
+	bigint_mul(&t, &z->mx, &b2);
+	bigint_addsub(&z->uy, &z->uy, &t, -1);
 }
 
 static void
@@ -471,7 +474,7 @@ arc_power(const struct arc *a, double x, double y)
 {
 	struct interval px, py, v;
 	struct bigarc z;
-	struct big bx, by, t, u;
+	struct bigint bx, by, t, u;
 	double dx = x - a->f.cx, dy = y - a->f.cy;
 	int s;
 
@@ -485,17 +488,17 @@ arc_power(const struct arc *a, double x, double y)
 	if (a->f.exactc[0] && a->f.exactc[1])
 		return powerat(a, x, y);
 	bigarc(a, &z);
-	big_diff(&bx, x, a->a.x);
-	big_diff(&by, y, a->a.y);
-	big_mul(&t, &bx, &bx);
-	big_mul(&u, &by, &by);
-	big_addsub(&t, &t, &u, 1);
-	big_mul(&t, &t, &z.d);
-	big_mul(&u, &bx, &z.ux);
-	big_addsub(&t, &t, &u, -1);
-	big_mul(&u, &by, &z.uy);
-	big_addsub(&t, &t, &u, -1);
-	return big_sign(&t) * a->sd;
+	bigint_diff(&bx, x, a->a.x);
+	bigint_diff(&by, y, a->a.y);
+	bigint_mul(&t, &bx, &bx);
+	bigint_mul(&u, &by, &by);
+	bigint_addsub(&t, &t, &u, 1);
+	bigint_mul(&t, &t, &z.d);
+	bigint_mul(&u, &bx, &z.ux);
+	bigint_addsub(&t, &t, &u, -1);
+	bigint_mul(&u, &by, &z.uy);
+	bigint_addsub(&t, &t, &u, -1);
+	return bigint_sign(&t) * a->sd;
 }
 
 /*
@@ -535,7 +538,7 @@ arc_cmpcentre(const struct arc *a, int axis, double v)
 	struct interval w = iv_sub(iv_scale(iv_mul(a->f.id, p), 2),
 	    axis ? a->f.iuy : a->f.iux);
 	struct bigarc z;
-	struct big b, t;
+	struct bigint b, t;
 	int s;
 
 	if (a->f.exactc[axis]) {
@@ -546,11 +549,11 @@ arc_cmpcentre(const struct arc *a, int axis, double v)
 	if ((s = iv_sign(w)) != 0)
 		return s * a->sd;
 	bigarc(a, &z);
-	big_diff(&b, v, axis ? a->a.y : a->a.x);
-	big_mul(&t, &z.d, &b);
-	big_addsub(&t, &t, &t, 1);
-	big_addsub(&t, &t, axis ? &z.uy : &z.ux, -1);
-	return big_sign(&t) * a->sd;
+	bigint_diff(&b, v, axis ? a->a.y : a->a.x);
+	bigint_mul(&t, &z.d, &b);
+	bigint_addsub(&t, &t, &t, 1);
+	bigint_addsub(&t, &t, axis ? &z.uy : &z.ux, -1);
+	return bigint_sign(&t) * a->sd;
 }
 
 /*
@@ -564,19 +567,19 @@ nudge2(const struct arc *a, double y)
 	struct interval w = iv_sub(iv_mul(a->f.id, iv_add(one, iv_scale(p, 2))),
 	    a->f.iuy);
 	struct bigarc z;
-	struct big b, t;
+	struct bigint b, t;
 	int s;
 
 	if ((s = iv_sign(w)) != 0)
 		return s * a->sd;
 	bigarc(a, &z);
-	big_diff(&b, y, a->a.y);
-	big_addsub(&b, &b, &b, 1);
-	big_fromdouble(&t, 1);
-	big_addsub(&b, &b, &t, 1);
-	big_mul(&t, &z.d, &b);
-	big_addsub(&t, &t, &z.uy, -1);
-	return big_sign(&t) * a->sd;
+	bigint_diff(&b, y, a->a.y);
+	bigint_addsub(&b, &b, &b, 1);
+	bigint_fromdouble(&t, 1);
+	bigint_addsub(&b, &b, &t, 1);
+	bigint_mul(&t, &z.d, &b);
+	bigint_addsub(&t, &t, &z.uy, -1);
+	return bigint_sign(&t) * a->sd;
 }
 
 /*
@@ -592,21 +595,21 @@ arc_powerline(const struct arc *a, int axis, double v)
 	struct interval w = iv_sub(iv_mul(dp, iv_sub(dp, iv_scale(u, 2))),
 	    iv_mul(o, o));
 	struct bigarc z;
-	struct big b, t, s2;
+	struct bigint b, t, s2;
 	int s;
 
 	if ((s = iv_sign(w)) != 0)
 		return s;
 	bigarc(a, &z);
-	big_diff(&b, v, axis ? a->a.y : a->a.x);
-	big_mul(&t, &z.d, &b);
-	big_addsub(&t, &t, &t, 1);		/* 2 D p */
-	big_addsub(&s2, &t, axis ? &z.uy : &z.ux, -1);
-	big_addsub(&s2, &s2, axis ? &z.uy : &z.ux, -1);	/* 2 D p - 2 U */
-	big_mul(&t, &t, &s2);
-	big_mul(&s2, axis ? &z.ux : &z.uy, axis ? &z.ux : &z.uy);
-	big_addsub(&t, &t, &s2, -1);
-	return big_sign(&t);
+	bigint_diff(&b, v, axis ? a->a.y : a->a.x);
+	bigint_mul(&t, &z.d, &b);
+	bigint_addsub(&t, &t, &t, 1);		/* 2 D p */
+	bigint_addsub(&s2, &t, axis ? &z.uy : &z.ux, -1);
+	bigint_addsub(&s2, &s2, axis ? &z.uy : &z.ux, -1);	/* 2 D p - 2 U */
+	bigint_mul(&t, &t, &s2);
+	bigint_mul(&s2, axis ? &z.ux : &z.uy, axis ? &z.ux : &z.uy);
+	bigint_addsub(&t, &t, &s2, -1);
+	return bigint_sign(&t);
 }
 
 /*
@@ -619,7 +622,7 @@ arc_orientline(const struct arc *a, int axis, double v)
 {
 	struct interval w;
 	struct bigarc z;
-	struct big b, t, u;
+	struct bigint b, t, u;
 	int s;
 
 	if (axis == 0)
@@ -634,25 +637,25 @@ arc_orientline(const struct arc *a, int axis, double v)
 		return s * a->sd;
 	bigarc(a, &z);
 	if (axis == 0) {
-		big_mul(&t, &z.bx, &z.uy);
-		big_diff(&b, v, a->a.x);
-		big_mul(&u, &z.by, &b);
-		big_mul(&u, &u, &z.d);
-		big_addsub(&t, &t, &u, -1);
-		big_addsub(&t, &t, &u, -1);
+		bigint_mul(&t, &z.bx, &z.uy);
+		bigint_diff(&b, v, a->a.x);
+		bigint_mul(&u, &z.by, &b);
+		bigint_mul(&u, &u, &z.d);
+		bigint_addsub(&t, &t, &u, -1);
+		bigint_addsub(&t, &t, &u, -1);
 	} else if (axis == 1) {
-		big_diff(&b, v, a->a.y);
-		big_mul(&t, &z.bx, &b);
-		big_mul(&t, &t, &z.d);
-		big_addsub(&t, &t, &t, 1);
-		big_mul(&u, &z.by, &z.ux);
-		big_addsub(&t, &t, &u, -1);
+		bigint_diff(&b, v, a->a.y);
+		bigint_mul(&t, &z.bx, &b);
+		bigint_mul(&t, &t, &z.d);
+		bigint_addsub(&t, &t, &t, 1);
+		bigint_mul(&u, &z.by, &z.ux);
+		bigint_addsub(&t, &t, &u, -1);
 	} else {
-		big_mul(&t, &z.bx, &z.uy);
-		big_mul(&u, &z.by, &z.ux);
-		big_addsub(&t, &t, &u, -1);
+		bigint_mul(&t, &z.bx, &z.uy);
+		bigint_mul(&u, &z.by, &z.ux);
+		bigint_addsub(&t, &t, &u, -1);
 	}
-	return big_sign(&t) * a->sd;
+	return bigint_sign(&t) * a->sd;
 }
 
 int
@@ -881,14 +884,14 @@ arc_defect(struct point a, struct point m, struct point b, const char *record)
 
 /* big = (a - b) . (c - d) or cross (a - b) x (c - d), from doubles */
 static void
-big_dot(struct big *z, const struct big *ux, const struct big *uy,
-    const struct big *vx, const struct big *vy, int cross)
+bigint_dot(struct bigint *z, const struct bigint *ux, const struct bigint *uy,
+    const struct bigint *vx, const struct bigint *vy, int cross)
 {
-	struct big t;
+	struct bigint t;
 
-	big_mul(z, ux, cross ? vy : vx);
-	big_mul(&t, uy, cross ? vx : vy);
-	big_addsub(z, z, &t, cross ? -1 : 1);
+	bigint_mul(z, ux, cross ? vy : vx);
+	bigint_mul(&t, uy, cross ? vx : vy);
+	bigint_addsub(z, z, &t, cross ? -1 : 1);
 }
 
 /* The sign of cross(b - a, d - c): which way the direction c->d turns. */
@@ -897,17 +900,17 @@ arc_crossdir(struct point a, struct point b, struct point c, struct point d)
 {
 	struct interval w = iv_sub(iv_mul(iv_diff(b.x, a.x), iv_diff(d.y,
 	    c.y)), iv_mul(iv_diff(b.y, a.y), iv_diff(d.x, c.x)));
-	struct big ux, uy, vx, vy, z;
+	struct bigint ux, uy, vx, vy, z;
 	int s;
 
 	if ((s = iv_sign(w)) != 0)
 		return s;
-	big_diff(&ux, b.x, a.x);
-	big_diff(&uy, b.y, a.y);
-	big_diff(&vx, d.x, c.x);
-	big_diff(&vy, d.y, c.y);
-	big_dot(&z, &ux, &uy, &vx, &vy, 1);
-	return big_sign(&z);
+	bigint_diff(&ux, b.x, a.x);
+	bigint_diff(&uy, b.y, a.y);
+	bigint_diff(&vx, d.x, c.x);
+	bigint_diff(&vy, d.y, c.y);
+	bigint_dot(&z, &ux, &uy, &vx, &vy, 1);
+	return bigint_sign(&z);
 }
 
 /*
@@ -922,22 +925,22 @@ arc_dotcentre(const struct arc *a, struct point p, struct point q)
 	    iv_diff(a->a.x, p.x), dx), iv_mul(iv_diff(a->a.y, p.y), dy))), 2),
 	    iv_add(iv_mul(a->f.iux, dx), iv_mul(a->f.iuy, dy)));
 	struct bigarc z;
-	struct big ex, ey, bdx, bdy, t, u;
+	struct bigint ex, ey, bdx, bdy, t, u;
 	int s;
 
 	if ((s = iv_sign(w)) != 0)
 		return s * a->sd;
 	bigarc(a, &z);
-	big_diff(&ex, a->a.x, p.x);
-	big_diff(&ey, a->a.y, p.y);
-	big_diff(&bdx, q.x, p.x);
-	big_diff(&bdy, q.y, p.y);
-	big_dot(&t, &ex, &ey, &bdx, &bdy, 0);
-	big_mul(&t, &t, &z.d);
-	big_addsub(&t, &t, &t, 1);
-	big_dot(&u, &z.ux, &z.uy, &bdx, &bdy, 0);
-	big_addsub(&t, &t, &u, 1);
-	return big_sign(&t) * a->sd;
+	bigint_diff(&ex, a->a.x, p.x);
+	bigint_diff(&ey, a->a.y, p.y);
+	bigint_diff(&bdx, q.x, p.x);
+	bigint_diff(&bdy, q.y, p.y);
+	bigint_dot(&t, &ex, &ey, &bdx, &bdy, 0);
+	bigint_mul(&t, &t, &z.d);
+	bigint_addsub(&t, &t, &t, 1);
+	bigint_dot(&u, &z.ux, &z.uy, &bdx, &bdy, 0);
+	bigint_addsub(&t, &t, &u, 1);
+	return bigint_sign(&t) * a->sd;
 }
 
 /*
@@ -953,7 +956,7 @@ arc_dotcentrecut(const struct arc *a, struct point p, struct point q)
 	struct interval ex = iv_diff(a->a.x, p.x), ey = iv_diff(a->a.y, p.y);
 	struct interval e, k, o0, w, zero = { 0, 0 };
 	struct bigarc z;
-	struct big bex, bey, bdx, bdy, bk, bo, t, u;
+	struct bigint bex, bey, bdx, bdy, bk, bo, t, u;
 	int s;
 
 	e = iv_add(iv_scale(iv_mul(a->f.id, iv_add(iv_mul(ex, dx),
@@ -966,24 +969,24 @@ arc_dotcentrecut(const struct arc *a, struct point p, struct point q)
 	if ((s = iv_sign(w)) != 0 && iv_sign(k) != 0)
 		return s * iv_sign(k) * a->sd;
 	bigarc(a, &z);
-	big_diff(&bex, a->a.x, p.x);
-	big_diff(&bey, a->a.y, p.y);
-	big_diff(&bdx, q.x, p.x);
-	big_diff(&bdy, q.y, p.y);
-	big_dot(&t, &bex, &bey, &bdx, &bdy, 0);
-	big_mul(&t, &t, &z.d);
-	big_addsub(&t, &t, &t, 1);
-	big_dot(&u, &z.ux, &z.uy, &bdx, &bdy, 0);
-	big_addsub(&t, &t, &u, 1);		/* e */
-	big_dot(&bk, &z.by, &z.bx, &bdy, &bdx, 1);	/* by dx - bx dy */
-	big_mul(&t, &t, &bk);
-	big_dot(&bo, &z.bx, &z.by, &bex, &bey, 1);	/* -o0 */
-	big_mul(&bo, &bo, &z.d);
-	big_dot(&u, &bdx, &bdy, &bdx, &bdy, 0);
-	big_mul(&bo, &bo, &u);
-	big_addsub(&t, &t, &bo, 1);
-	big_addsub(&t, &t, &bo, 1);
-	return big_sign(&t) * big_sign(&bk) * a->sd;
+	bigint_diff(&bex, a->a.x, p.x);
+	bigint_diff(&bey, a->a.y, p.y);
+	bigint_diff(&bdx, q.x, p.x);
+	bigint_diff(&bdy, q.y, p.y);
+	bigint_dot(&t, &bex, &bey, &bdx, &bdy, 0);
+	bigint_mul(&t, &t, &z.d);
+	bigint_addsub(&t, &t, &t, 1);
+	bigint_dot(&u, &z.ux, &z.uy, &bdx, &bdy, 0);
+	bigint_addsub(&t, &t, &u, 1);		/* e */
+	bigint_dot(&bk, &z.by, &z.bx, &bdy, &bdx, 1);	/* by dx - bx dy */
+	bigint_mul(&t, &t, &bk);
+	bigint_dot(&bo, &z.bx, &z.by, &bex, &bey, 1);	/* -o0 */
+	bigint_mul(&bo, &bo, &z.d);
+	bigint_dot(&u, &bdx, &bdy, &bdx, &bdy, 0);
+	bigint_mul(&bo, &bo, &u);
+	bigint_addsub(&t, &t, &bo, 1);
+	bigint_addsub(&t, &t, &bo, 1);
+	return bigint_sign(&t) * bigint_sign(&bk) * a->sd;
 }
 
 /*
@@ -998,7 +1001,7 @@ arc_linepower(const struct arc *a, struct point p, struct point q)
 	struct interval ex = iv_diff(a->a.x, p.x), ey = iv_diff(a->a.y, p.y);
 	struct interval c, w;
 	struct bigarc z;
-	struct big bex, bey, bdx, bdy, t, u;
+	struct bigint bex, bey, bdx, bdy, t, u;
 	int s;
 
 	c = iv_add(iv_scale(iv_mul(a->f.id, iv_sub(iv_mul(dx, ey), iv_mul(dy,
@@ -1008,21 +1011,21 @@ arc_linepower(const struct arc *a, struct point p, struct point q)
 	if ((s = iv_sign(w)) != 0)
 		return s;
 	bigarc(a, &z);
-	big_diff(&bex, a->a.x, p.x);
-	big_diff(&bey, a->a.y, p.y);
-	big_diff(&bdx, q.x, p.x);
-	big_diff(&bdy, q.y, p.y);
-	big_dot(&t, &bdx, &bdy, &bex, &bey, 1);
-	big_mul(&t, &t, &z.d);
-	big_addsub(&t, &t, &t, 1);
-	big_dot(&u, &bdx, &bdy, &z.ux, &z.uy, 1);
-	big_addsub(&t, &t, &u, 1);
-	big_mul(&t, &t, &t);
-	big_dot(&u, &z.ux, &z.uy, &z.ux, &z.uy, 0);
-	big_dot(&bex, &bdx, &bdy, &bdx, &bdy, 0);
-	big_mul(&u, &u, &bex);
-	big_addsub(&t, &t, &u, -1);
-	return big_sign(&t);
+	bigint_diff(&bex, a->a.x, p.x);
+	bigint_diff(&bey, a->a.y, p.y);
+	bigint_diff(&bdx, q.x, p.x);
+	bigint_diff(&bdy, q.y, p.y);
+	bigint_dot(&t, &bdx, &bdy, &bex, &bey, 1);
+	bigint_mul(&t, &t, &z.d);
+	bigint_addsub(&t, &t, &t, 1);
+	bigint_dot(&u, &bdx, &bdy, &z.ux, &z.uy, 1);
+	bigint_addsub(&t, &t, &u, 1);
+	bigint_mul(&t, &t, &t);
+	bigint_dot(&u, &z.ux, &z.uy, &z.ux, &z.uy, 0);
+	bigint_dot(&bex, &bdx, &bdy, &bdx, &bdy, 0);
+	bigint_mul(&u, &u, &bex);
+	bigint_addsub(&t, &t, &u, -1);
+	return bigint_sign(&t);
 }
 
 /*
@@ -1035,7 +1038,7 @@ arc_tangentcross(const struct arc *a1, const struct arc *a2, struct point v)
 {
 	struct interval w1x, w1y, w2x, w2y, w;
 	struct bigarc z1, z2;
-	struct big p1x, p1y, p2x, p2y, t;
+	struct bigint p1x, p1y, p2x, p2y, t;
 	int s;
 
 	w1x = iv_sub(iv_scale(iv_mul(a1->f.id, iv_diff(v.x, a1->a.x)), 2),
@@ -1051,24 +1054,24 @@ arc_tangentcross(const struct arc *a1, const struct arc *a2, struct point v)
 		return s * a1->sd * a2->sd;
 	bigarc(a1, &z1);
 	bigarc(a2, &z2);
-	big_diff(&p1x, v.x, a1->a.x);
-	big_mul(&p1x, &p1x, &z1.d);
-	big_addsub(&p1x, &p1x, &p1x, 1);
-	big_addsub(&p1x, &p1x, &z1.ux, -1);
-	big_diff(&p1y, v.y, a1->a.y);
-	big_mul(&p1y, &p1y, &z1.d);
-	big_addsub(&p1y, &p1y, &p1y, 1);
-	big_addsub(&p1y, &p1y, &z1.uy, -1);
-	big_diff(&p2x, v.x, a2->a.x);
-	big_mul(&p2x, &p2x, &z2.d);
-	big_addsub(&p2x, &p2x, &p2x, 1);
-	big_addsub(&p2x, &p2x, &z2.ux, -1);
-	big_diff(&p2y, v.y, a2->a.y);
-	big_mul(&p2y, &p2y, &z2.d);
-	big_addsub(&p2y, &p2y, &p2y, 1);
-	big_addsub(&p2y, &p2y, &z2.uy, -1);
-	big_dot(&t, &p2x, &p2y, &p1x, &p1y, 1);
-	return big_sign(&t) * a1->sd * a2->sd;
+	bigint_diff(&p1x, v.x, a1->a.x);
+	bigint_mul(&p1x, &p1x, &z1.d);
+	bigint_addsub(&p1x, &p1x, &p1x, 1);
+	bigint_addsub(&p1x, &p1x, &z1.ux, -1);
+	bigint_diff(&p1y, v.y, a1->a.y);
+	bigint_mul(&p1y, &p1y, &z1.d);
+	bigint_addsub(&p1y, &p1y, &p1y, 1);
+	bigint_addsub(&p1y, &p1y, &z1.uy, -1);
+	bigint_diff(&p2x, v.x, a2->a.x);
+	bigint_mul(&p2x, &p2x, &z2.d);
+	bigint_addsub(&p2x, &p2x, &p2x, 1);
+	bigint_addsub(&p2x, &p2x, &z2.ux, -1);
+	bigint_diff(&p2y, v.y, a2->a.y);
+	bigint_mul(&p2y, &p2y, &z2.d);
+	bigint_addsub(&p2y, &p2y, &p2y, 1);
+	bigint_addsub(&p2y, &p2y, &z2.uy, -1);
+	bigint_dot(&t, &p2x, &p2y, &p1x, &p1y, 1);
+	return bigint_sign(&t) * a1->sd * a2->sd;
 }
 
 /*
@@ -1106,7 +1109,7 @@ arc_rootsat(int gs, int ts, int r[2])
 }
 
 static void
-big_neg(struct big *z)
+bigint_neg(struct bigint *z)
 {
 	if (z->n > 0)
 		z->neg = !z->neg;
@@ -1144,7 +1147,7 @@ arc_circlesmeet(const struct arc *a1, const struct arc *a2, int side[2][2])
 	const struct point *p[6] = { &a1->a, &a1->m, &a1->b, &a2->a, &a2->m,
 	    &a2->b };
 	struct bigarc z[2];
-	struct big ex, ey, e2, k, nx, ny, g, la[2], t, u;
+	struct bigint ex, ey, e2, k, nx, ny, g, la[2], t, u;
 	int i, j, nroots, s, low = INT_MAX;
 
 	/*
@@ -1161,70 +1164,70 @@ arc_circlesmeet(const struct arc *a1, const struct arc *a2, int side[2][2])
 	low = low == INT_MAX ? 0 : low + BIGSHIFT;
 	bigarcshift(a1, &z[0], low);
 	bigarcshift(a2, &z[1], low);
-	big_diff(&ex, a2->a.x, a1->a.x);
-	big_diff(&ey, a2->a.y, a1->a.y);
-	big_shr(&ex, low);
-	big_shr(&ey, low);
-	big_dot(&e2, &ex, &ey, &ex, &ey, 0);
+	bigint_diff(&ex, a2->a.x, a1->a.x);
+	bigint_diff(&ey, a2->a.y, a1->a.y);
+	bigint_shr(&ex, low);
+	bigint_shr(&ey, low);
+	bigint_dot(&e2, &ex, &ey, &ex, &ey, 0);
 	/* L(A1) = -D1 P2(A1) = -k, L(A2) = D2 P1(A2) */
-	big_mul(&k, &z[1].d, &e2);
-	big_dot(&t, &ex, &ey, &z[1].ux, &z[1].uy, 0);
-	big_addsub(&k, &k, &t, 1);
-	big_mul(&k, &k, &z[0].d);
+	bigint_mul(&k, &z[1].d, &e2);
+	bigint_dot(&t, &ex, &ey, &z[1].ux, &z[1].uy, 0);
+	bigint_addsub(&k, &k, &t, 1);
+	bigint_mul(&k, &k, &z[0].d);
 	la[0] = k;
-	big_neg(&la[0]);
-	big_mul(&la[1], &z[0].d, &e2);
-	big_dot(&t, &ex, &ey, &z[0].ux, &z[0].uy, 0);
-	big_addsub(&la[1], &la[1], &t, -1);
-	big_mul(&la[1], &la[1], &z[1].d);
-	big_mul(&g, &z[0].d, &z[1].d);
-	big_addsub(&g, &g, &g, 1);
-	big_mul(&nx, &g, &ex);
-	big_mul(&ny, &g, &ey);
-	big_mul(&t, &z[0].d, &z[1].ux);
-	big_addsub(&nx, &nx, &t, 1);
-	big_mul(&t, &z[1].d, &z[0].ux);
-	big_addsub(&nx, &nx, &t, -1);
-	big_mul(&t, &z[0].d, &z[1].uy);
-	big_addsub(&ny, &ny, &t, 1);
-	big_mul(&t, &z[1].d, &z[0].uy);
-	big_addsub(&ny, &ny, &t, -1);
-	if (big_sign(&nx) == 0 && big_sign(&ny) == 0)
+	bigint_neg(&la[0]);
+	bigint_mul(&la[1], &z[0].d, &e2);
+	bigint_dot(&t, &ex, &ey, &z[0].ux, &z[0].uy, 0);
+	bigint_addsub(&la[1], &la[1], &t, -1);
+	bigint_mul(&la[1], &la[1], &z[1].d);
+	bigint_mul(&g, &z[0].d, &z[1].d);
+	bigint_addsub(&g, &g, &g, 1);
+	bigint_mul(&nx, &g, &ex);
+	bigint_mul(&ny, &g, &ey);
+	bigint_mul(&t, &z[0].d, &z[1].ux);
+	bigint_addsub(&nx, &nx, &t, 1);
+	bigint_mul(&t, &z[1].d, &z[0].ux);
+	bigint_addsub(&nx, &nx, &t, -1);
+	bigint_mul(&t, &z[0].d, &z[1].uy);
+	bigint_addsub(&ny, &ny, &t, 1);
+	bigint_mul(&t, &z[1].d, &z[0].uy);
+	bigint_addsub(&ny, &ny, &t, -1);
+	if (bigint_sign(&nx) == 0 && bigint_sign(&ny) == 0)
 		return 0;	/* one centre, two radii */
-	big_mul(&g, &z[0].d, &k);
-	big_addsub(&g, &g, &g, 1);
-	big_dot(&t, &nx, &ny, &z[0].ux, &z[0].uy, 0);
-	big_addsub(&g, &g, &t, -1);
-	big_dot(&t, &z[0].ux, &z[0].uy, &z[0].ux, &z[0].uy, 0);
-	big_dot(&u, &nx, &ny, &nx, &ny, 0);
-	big_mul(&t, &t, &u);
-	big_mul(&u, &g, &g);
-	big_addsub(&t, &t, &u, -1);
-	if ((s = big_sign(&t)) < 0)
+	bigint_mul(&g, &z[0].d, &k);
+	bigint_addsub(&g, &g, &g, 1);
+	bigint_dot(&t, &nx, &ny, &z[0].ux, &z[0].uy, 0);
+	bigint_addsub(&g, &g, &t, -1);
+	bigint_dot(&t, &z[0].ux, &z[0].uy, &z[0].ux, &z[0].uy, 0);
+	bigint_dot(&u, &nx, &ny, &nx, &ny, 0);
+	bigint_mul(&t, &t, &u);
+	bigint_mul(&u, &g, &g);
+	bigint_addsub(&t, &t, &u, -1);
+	if ((s = bigint_sign(&t)) < 0)
 		return 0;
 	nroots = s > 0 ? 2 : 1;
 	for (j = 0; j < 2; j++) {
 		const struct arc *a = j ? a2 : a1, *o = j ? a1 : a2;
-		struct big c, nb, w;
+		struct bigint c, nb, w;
 		int kd, gs, ts = 0, r[2];
 
-		big_dot(&nb, &nx, &ny, &z[j].bx, &z[j].by, 0);
-		big_dot(&c, &nx, &ny, &z[j].bx, &z[j].by, 1);
-		if ((kd = big_sign(&nb)) == 0) {
-			s = big_sign(&c) * big_sign(&la[j]) * a->sd;
+		bigint_dot(&nb, &nx, &ny, &z[j].bx, &z[j].by, 0);
+		bigint_dot(&c, &nx, &ny, &z[j].bx, &z[j].by, 1);
+		if ((kd = bigint_sign(&nb)) == 0) {
+			s = bigint_sign(&c) * bigint_sign(&la[j]) * a->sd;
 			side[0][j] = side[1][j] = s;
 			continue;
 		}
 		gs = arc_power(o, a->a.x, a->a.y) * arc_power(o, a->b.x,
 		    a->b.y);
 		if (gs >= 0) {
-			big_dot(&w, &nx, &ny, &z[j].ux, &z[j].uy, 1);
-			big_mul(&w, &w, &nb);
-			big_mul(&t, &z[j].d, &la[j]);
-			big_addsub(&t, &t, &t, 1);
-			big_mul(&t, &t, &c);
-			big_addsub(&w, &w, &t, 1);
-			ts = big_sign(&w) * a->sd * kd;
+			bigint_dot(&w, &nx, &ny, &z[j].ux, &z[j].uy, 1);
+			bigint_mul(&w, &w, &nb);
+			bigint_mul(&t, &z[j].d, &la[j]);
+			bigint_addsub(&t, &t, &t, 1);
+			bigint_mul(&t, &t, &c);
+			bigint_addsub(&w, &w, &t, 1);
+			ts = bigint_sign(&w) * a->sd * kd;
 		}
 		arc_rootsat(gs, ts, r);
 		for (i = 0; i < 2; i++)

@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "num.h"
 
 /* The sign of the area of loop v[0..n), exactly: > 0 counter-clockwise. */
 int

@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "inline.h"
 
 struct live {
 	uint64_t	x, y;

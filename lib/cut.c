@@ -34,7 +34,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "num.h"
 
 /* Sides of the cell, as walked from its lower left corner. */
 enum { BOTTOM, RIGHT, TOP, LEFT, NONE };

@@ -10,7 +10,7 @@
 #include <math.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "num.h"
 
 /* (3 + 16 eps) eps, eps = 2^-53: Shewchuk's ccwerrboundA. */
 #define ORIENT_BOUND	(3.3306690738754716e-16)

@@ -29,7 +29,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "num.h"
 
 /* A digit's value, or 10 or more for any other character. */
 #define DIGIT(c)	((unsigned)(unsigned char)(c) - '0')
@@ -122,16 +122,20 @@ lemire(uint64_t w, int q, uint64_t *m, int *e)
 	return q >= 0 && q <= 27 ? (int)(*m & 1) : 1;
 }
 
-/* Big naturals: little-endian 64-bit limbs, n of them in use. */
+/*
+ * Big naturals for the exact step, bignat: little-endian 64-bit limbs, n of
+ * them in use (lib/arc.c has signed big integers of its own, bigint, with
+ * 32-bit limbs and four times the room).
+ */
 #define LIMBS	48	/* 3072 bits: exact() needs 2666 */
 
-struct big {
+struct bignat {
 	int		 n;
 	uint64_t	 d[LIMBS];
 };
 
 static void
-bigset(struct big *x, uint64_t v)
+bignat_set(struct bignat *x, uint64_t v)
 {
 	x->d[0] = v;
 	x->n = v != 0;
@@ -139,7 +143,7 @@ bigset(struct big *x, uint64_t v)
 
 /* x = x k + a */
 static void
-bigmuladd(struct big *x, uint64_t k, uint64_t a)
+bignat_muladd(struct bignat *x, uint64_t k, uint64_t a)
 {
 	uint64_t hi, lo, c = a;
 	int i;
@@ -158,19 +162,19 @@ bigmuladd(struct big *x, uint64_t k, uint64_t a)
 }
 
 static void
-bigpow5(struct big *x, int n)
+bignat_pow5(struct bignat *x, int n)
 {
 	uint64_t f = 1;
 
 	for (; n >= 27; n -= 27)
-		bigmuladd(x, 7450580596923828125u, 0);	/* 5^27 < 2^64 */
+		bignat_muladd(x, 7450580596923828125u, 0);	/* 5^27 < 2^64 */
 	for (; n > 0; n--)
 		f *= 5;
-	bigmuladd(x, f, 0);
+	bignat_muladd(x, f, 0);
 }
 
 static void
-bigshl(struct big *x, int n)
+bignat_shl(struct bignat *x, int n)
 {
 	int limbs = n / 64, bits = n % 64, i;
 
@@ -191,7 +195,7 @@ bigshl(struct big *x, int n)
 }
 
 static int
-bigcmp(const struct big *x, const struct big *y)
+bignat_cmp(const struct bignat *x, const struct bignat *y)
 {
 	int i;
 
@@ -210,18 +214,18 @@ bigcmp(const struct big *x, const struct big *y)
  * l 2^k is compared with p mm 2^j, the smaller power of two divided out.
  */
 static int
-cmpdec(const struct big *l, const struct big *p, int k, int tail,
+cmpdec(const struct bignat *l, const struct bignat *p, int k, int tail,
     uint64_t mm, int j)
 {
-	struct big a = *l, b = *p;
+	struct bignat a = *l, b = *p;
 	int c;
 
-	bigmuladd(&b, mm, 0);
+	bignat_muladd(&b, mm, 0);
 	if (k > j)
-		bigshl(&a, k - j);
+		bignat_shl(&a, k - j);
 	else
-		bigshl(&b, j - k);
-	c = bigcmp(&a, &b);
+		bignat_shl(&b, j - k);
+	c = bignat_cmp(&a, &b);
 	return c != 0 ? c : tail;
 }
 
@@ -248,7 +252,7 @@ static int
 exact(const char *first, const char *stop, int q, uint64_t m, int e,
     uint64_t *bits)
 {
-	struct big n, p;
+	struct bignat n, p;
 	const char *t;
 	size_t ns;
 	uint64_t chunk = 0, scale = 1;
@@ -261,23 +265,23 @@ exact(const char *first, const char *stop, int q, uint64_t m, int e,
 		chunk = chunk * 10 + (uint64_t)(*t - '0');
 		nd++;
 		if ((scale *= 10) == 10000000000000000000u) {
-			bigmuladd(&n, scale, chunk);
+			bignat_muladd(&n, scale, chunk);
 			chunk = 0;
 			scale = 1;
 		}
 	}
-	bigmuladd(&n, scale, chunk);
+	bignat_muladd(&n, scale, chunk);
 	for (ns = nd; t < stop; t++)
 		if (*t != '.') {
 			ns++;
 			tail |= *t != '0';
 		}
 	k = q + (ns < 19 ? (int)ns : 19) - nd;
-	bigset(&p, 1);
+	bignat_set(&p, 1);
 	if (k >= 0)
-		bigpow5(&n, k);
+		bignat_pow5(&n, k);
 	else
-		bigpow5(&p, -k);
+		bignat_pow5(&p, -k);
 
 	while ((c = cmpdec(&n, &p, k, tail, 2 * m + 1, e - 1)) >= 0) {
 		if (c == 0 && !(m & 1))

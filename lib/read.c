@@ -15,7 +15,8 @@
 #include <unistd.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "celltext.h"
+#include "inline.h"
 
 enum { BEFORE_HEADER, IN_BODY, AFTER_END };
 

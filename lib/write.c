@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "celltext.h"
 
 /*
  * Cells take their texts from the cell text cache.  A mesh's vertices,
