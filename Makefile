@@ -16,12 +16,13 @@ MAN5 = man/qtree.5
 QTREEH = lib/qtree.h lib/arcfilter.h	# the public header and what it includes
 LIBOBJ = lib/msg.o lib/hugepage.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
 	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
-	lib/pow5.o lib/op.o lib/arc.o lib/cut.o lib/earclip.o lib/celltext.o
+	lib/pow5.o lib/op.o lib/arc.o lib/arccheck.o lib/bigint.o lib/cut.o \
+	lib/earclip.o lib/celltext.o lib/readhead.o
 
 all: $(BIN)
 
 $(LIBOBJ): $(QTREEH)
-$(LIBOBJ): lib/num.h lib/celltext.h lib/inline.h
+$(LIBOBJ): lib/num.h lib/celltext.h lib/inline.h lib/exact.h lib/reader.h
 lib/libqtree.a: $(LIBOBJ)
 	rm -f $@
 	ar rc $@ $(LIBOBJ)

@@ -10,8 +10,8 @@
  *			parsecoordok)
  *	fmt.c		fmt-: numbers written (fmtreal, fmtint)
  *	geom.c		orient2d, and geom_: points and rings
- *	arc.c		arc_: circular arcs, exactly; an arc against a box;
- *			polyread's questions about arcs
+ *	arc.c		arc_: circular arcs, exactly; an arc against a box
+ *	arccheck.c	arc_: the questions of polyread's checks of arcs
  *	cell.c		cell_: cell arithmetic, paths, the range rule
  *	cellset.c	cellset_: cells in memory, neighbours
  *	corner.c	corner_: a mesh's vertices as grid points
@@ -139,7 +139,7 @@ int	 arc_nearpower(const struct arc *, double, double, double, double,
 	    const signed char[4], const signed char[4], int *);
 
 /*
- * For polyread's checks: arc_defect says why three points make no arc, or
+ * arccheck.c, for polyread's checks: arc_defect says why three points make no arc, or
  * NULL; arc_crossdir gives the sign of cross(b - a, d - c); arc_dotcentre that
  * of (C - p) . (q - p), arc_dotcentrecut that of (C - X) . (q - p) for X
  * where the line p->q meets the chord's line (not parallel to it),
