@@ -124,7 +124,7 @@ lemire(uint64_t w, int q, uint64_t *m, int *e)
 
 /*
  * Big naturals for the exact step, bignat: little-endian 64-bit limbs, n of
- * them in use (lib/arc.c has signed big integers of its own, bigint, with
+ * them in use (lib/bigint.c has signed big integers of its own, bigint, with
  * 32-bit limbs and four times the room).
  */
 #define LIMBS	48	/* 3072 bits: exact() needs 2666 */

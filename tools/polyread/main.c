@@ -135,7 +135,10 @@ check(struct input *in)
 		progress(1, "%llu vertices in %zu rings read", in->nvertices,
 		    in->nrings);
 	checkrings(in);
-	touches = checkedges(in, &ntouches);
+	if (hasarcs(in))
+		touches = checkcurves(in, &ntouches);
+	else
+		touches = checkedges(in, &ntouches);
 	if (verbose)
 		progress(1, "no two edges cross or overlap");
 	checknesting(in, touches, ntouches);

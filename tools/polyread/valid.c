@@ -155,27 +155,6 @@ checkarcs(const struct input *in, struct inring *r)
 	}
 }
 
-/* Which rings they are, as people count them: from 1 in input order. */
-long
-ringno(const struct input *in, const struct inring *r)
-{
-	return (long)(r - in->rings) + 1;
-}
-
-void
-pairfail(const struct input *in, size_t ring1, size_t i, size_t ring2,
-    size_t j, const char *what, struct point p)
-{
-	const struct inring *r = &in->rings[ring1], *q = &in->rings[ring2];
-	char px[32], py[32];
-
-	fmtreal(px, p.x);
-	fmtreal(py, p.y);
-	errat(r->file, r->line[i], "ring %ld edge %zu (line %ld) %s ring %ld "
-	    "edge %zu (line %ld) at %s %s", ringno(in, r), i + 1, r->line[i],
-	    what, ringno(in, q), j + 1, q->line[j], px, py);
-}
-
 static void
 checkring(const struct input *in, struct inring *r)
 {
