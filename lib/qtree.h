@@ -1,7 +1,7 @@
 /*
  * qtree.h: the one library of the qtree toolkit.
  *
- * Contents, in order; a file's names share one prefix, which names it:
+ * Contents, in order, and the prefix that a file's names share:
  *	msg.c		messages as err(3)'s (die, errat, warnat, usageexit,
  *			progress), and x-: libc's calls checked (xmalloc,
  *			xgrow, xstrdup, xsetprogname); openin, closeout
