@@ -41,7 +41,7 @@ POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
 # So has qtmesh.
 QTMESHOBJ = tools/qtmesh/main.o tools/qtmesh/tree.o tools/qtmesh/conform.o \
 	tools/qtmesh/bfit.o tools/qtmesh/boundary.o tools/qtmesh/join.o \
-	tools/qtmesh/rcm.o tools/qtmesh/write.o
+	tools/qtmesh/rcm.o tools/qtmesh/write.o tools/qtmesh/refine.o
 $(BIN): lib/libqtree.a
 polyread: $(POLYREADOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(POLYREADOBJ) lib/libqtree.a $(LDLIBS)

@@ -102,6 +102,99 @@ orient2d(double ax, double ay, double bx, double by, double cx, double cy)
 	return orient_exact(ax, ay, bx, by, cx, cy);
 }
 
+/* (10 + 96 eps) eps, eps = 2^-53: Shewchuk's iccerrboundA. */
+#define INCIRCLE_BOUND	(1.1102230246251577e-15)
+
+/*
+ * sign * p * q * r * s exactly into x, each factor the sum of two
+ * doubles f[0] + f[1]: the sixteen products of four doubles.
+ */
+static void
+addprod4(struct xsum *x, int sign, const double *p, const double *q,
+    const double *r, const double *s)
+{
+	double hi, lo;
+	int k;
+
+	for (k = 0; k < 16; k++) {
+		two_product(sign * p[k & 1], q[k >> 1 & 1], &hi, &lo);
+		area_addprod3(x, hi, r[k >> 2 & 1], s[k >> 3 & 1]);
+		area_addprod3(x, lo, r[k >> 2 & 1], s[k >> 3 & 1]);
+	}
+}
+
+/*
+ * The incircle determinant exactly, from the differences d[i] (x then y
+ * of a - d, b - d, c - d), each kept as two doubles, d[i][0] + d[i][1]:
+ * scaled by a power of two so that the largest is near 1 (the sign does
+ * not change and no product overflows), the determinant is the sum over
+ * the rows of lift times the minor of the other two, lift = dx^2 + dy^2,
+ * as an expansion.
+ */
+static int
+incircle_exact(double d[6][2])
+{
+	double big = 0;
+	struct xsum x;
+	int i, e, sign;
+
+	for (i = 0; i < 6; i++)
+		if (fabs(d[i][0]) > big)
+			big = fabs(d[i][0]);
+	(void)frexp(big, &e);
+	for (i = 0; i < 6; i++) {
+		d[i][0] = ldexp(d[i][0], -e);
+		d[i][1] = ldexp(d[i][1], -e);
+	}
+	area_init(&x);
+	for (i = 0; i < 3; i++) {
+		const double *rx = d[2 * i], *ry = d[2 * i + 1];
+		const double *sx = d[2 * ((i + 1) % 3)];
+		const double *sy = d[2 * ((i + 1) % 3) + 1];
+		const double *tx = d[2 * ((i + 2) % 3)];
+		const double *ty = d[2 * ((i + 2) % 3) + 1];
+
+		addprod4(&x, 1, rx, rx, sx, ty);
+		addprod4(&x, -1, rx, rx, tx, sy);
+		addprod4(&x, 1, ry, ry, sx, ty);
+		addprod4(&x, -1, ry, ry, tx, sy);
+	}
+	sign = area_sign(&x);
+	area_free(&x);
+	return sign;
+}
+
+/*
+ * > 0 when d lies inside the circle through a, b, c (counter-clockwise),
+ * < 0 outside, 0 on it: Shewchuk's filter, then the expansion.
+ */
+int
+incircle(double ax, double ay, double bx, double by, double cx, double cy,
+    double dx, double dy)
+{
+	double adx = ax - dx, ady = ay - dy, bdx = bx - dx, bdy = by - dy;
+	double cdx = cx - dx, cdy = cy - dy;
+	double bc = bdx * cdy, cb = cdx * bdy, alift = adx * adx + ady * ady;
+	double ca = cdx * ady, ac = adx * cdy, blift = bdx * bdx + bdy * bdy;
+	double ab = adx * bdy, ba = bdx * ady, clift = cdx * cdx + cdy * cdy;
+	double det = alift * (bc - cb) + blift * (ca - ac) + clift * (ab - ba);
+	double perm = (fabs(bc) + fabs(cb)) * alift + (fabs(ca) + fabs(ac)) *
+	    blift + (fabs(ab) + fabs(ba)) * clift;
+	double diff[6][2];
+
+	if (det > INCIRCLE_BOUND * perm)
+		return 1;
+	if (-det > INCIRCLE_BOUND * perm)
+		return -1;
+	two_sum(ax, -dx, &diff[0][0], &diff[0][1]);
+	two_sum(ay, -dy, &diff[1][0], &diff[1][1]);
+	two_sum(bx, -dx, &diff[2][0], &diff[2][1]);
+	two_sum(by, -dy, &diff[3][0], &diff[3][1]);
+	two_sum(cx, -dx, &diff[4][0], &diff[4][1]);
+	two_sum(cy, -dy, &diff[5][0], &diff[5][1]);
+	return incircle_exact(diff);
+}
+
 /*
  * The side of a->b on which the point c + e(d - c) lies, for an
  * infinitesimal e > 0: orient(a, b, c) unless c is on the line, then the

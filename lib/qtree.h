@@ -9,7 +9,8 @@
  *	parse.c		parse-: numbers read (parsereal, parselong,
  *			parsecoordok)
  *	fmt.c		fmt-: numbers written (fmtreal, fmtint)
- *	geom.c		orient2d, and geom_: points and rings
+ *	geom.c		orient2d, incircle (Shewchuk's names), and geom_:
+ *			points and rings
  *	arc.c		arc_: circular arcs, exactly; an arc against a box
  *	arccheck.c	arc_: the questions of polyread's checks of arcs
  *	cell.c		cell_: cell arithmetic, paths, the range rule
@@ -87,6 +88,8 @@ struct point {
 	double	x, y;
 };
 int	 orient2d(double, double, double, double, double, double);
+int	 incircle(double, double, double, double, double, double, double,
+	    double);
 int	 geom_raycrosses(struct point, struct point, struct point,
 	    struct point);
 int	 geom_pointcmp(const void *, const void *);

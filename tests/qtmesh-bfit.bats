@@ -63,7 +63,7 @@ area2='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	# hole, 8 vertices and 1 hole make 8 + 2 * 1 - 2 = 8 triangles; the
 	# other leaves are full quads; 9 grid corners and 4 hole vertices
 	printf '0 0\n4 0\n4 4\n0 4\n\n1.25 1.25\n1.25 1.75\n1.75 1.75\n1.75 1.25\n' |
-	    polyread -l 1 | qtsplit | qtmesh -b > mesh.qt
+	    polyread -l 1 | qtsplit | qtmesh -b -a 0 > mesh.qt
 	[ "$(grep -c '^vertex ' mesh.qt)" = 13 ]
 	[ "$(grep -c '^elem [0-9]* tri ' mesh.qt)" = 8 ]
 	[ "$(grep -c '^elem [0-9]* quad ' mesh.qt)" = 3 ]
@@ -119,7 +119,7 @@ area2='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	leaf 3 1 1 1 1 1 1 E
 	end 15
 	EOF
-	qtmesh -b tree.qt > mesh.qt
+	qtmesh -b -a 0 tree.qt > mesh.qt
 	awk '$1 == "vertex" { p[$2] = $3 "," $4 } $1 == "elem" && $3 == "tri" {
 	    s = $3; for (k = 4; k <= NF; k++) s = s " " p[$k]; print s }' mesh.qt > got
 	printf '%s\n' 'tri 1,0 2,0 1,0.5' 'tri 2,0 1,1 1,0.5' \
@@ -147,7 +147,7 @@ area2='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	run -2 --separate-stderr qtmesh -b -c F /dev/null
 	[[ "$stderr" == *"not with -c"* ]]
 	run -2 --separate-stderr qtmesh -x
-	[ "${stderr_lines[1]}" = "usage: qtmesh [-bHhrTv] [-c classes] [-f format] [-o basename] [-t fraction] [file]" ]
+	[ "${stderr_lines[1]}" = "usage: qtmesh [-bHhrTv] [-a angle] [-c classes] [-f format] [-o basename] [-t fraction] [file]" ]
 	grep -q '^\.Op Fl bHhrTv$' "$TOP/man/qtmesh.1"
 }
 
@@ -435,7 +435,7 @@ trapezoid() {
 }
 
 @test "-t: a corner piece joins its neighbours (worked by hand)" {
-	trapezoid | qtmesh -b > plain.qt
+	trapezoid | qtmesh -b -a 0 > plain.qt
 	trapezoid | qtmesh -b -t 0.01 > joined.qt
 	run -0 awk '$1 == "vertex" { n++ } $1 == "elem" { e++ } END { print n, e }' plain.qt
 	[ "$output" = "9 7" ]
@@ -471,7 +471,7 @@ trapezoid() {
 		f=$1
 		[ -f "$f" ] || f=$TOP/$1
 		polyread "$f" | qtsplit -l $2 | qtbalance > tree.qt
-		qtmesh -b tree.qt > plain.qt
+		qtmesh -b -a 0 tree.qt > plain.qt
 		qtmesh -b -t 0.2 tree.qt > joined.qt
 		bfitcheck joined.qt > check || { echo "$c:"; cat check; return 1; }
 		a=$(qtstats plain.qt | awk '$1 == "smallest_angle" { print $2 }')
@@ -486,7 +486,7 @@ trapezoid() {
 
 @test "-t 0 joins nothing; -t needs -b and a fraction from 0 to 1" {
 	trapezoid > tree.qt
-	qtmesh -b tree.qt > plain.qt
+	qtmesh -b -a 0 tree.qt > plain.qt
 	qtmesh -b -t 0 tree.qt > zero.qt
 	cmp plain.qt zero.qt
 	run -2 qtmesh -t 0.1 tree.qt

@@ -14,6 +14,7 @@
  * then checked against the rings (boundary.c), and with -t small pieces
  * joined (join.c).
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -209,6 +210,107 @@ leafloops(struct mesh *m, const struct leaf *l)
 }
 
 /*
+ * The line of the index (vertical or not) nearest to v, v itself when
+ * there is none.
+ */
+static double
+nearestline(const struct bfit *b, int vertical, double v)
+{
+	const struct linept *a = vertical ? b->vline : b->hline;
+	size_t n = vertical ? b->nvline : b->nhline, first = 0, end = n, mid;
+	double best = v;
+
+	while (first < end) {
+		mid = first + (end - first) / 2;
+		if (a[mid].line < v)
+			first = mid + 1;
+		else
+			end = mid;
+	}
+	if (first < n)
+		best = a[first].line;
+	if (first > 0 && (first == n || v - a[first - 1].line < best - v))
+		best = a[first - 1].line;
+	return best;
+}
+
+/* Point (x, y) is to be taken as (tx, ty) in every loop. */
+static void
+snapput(struct bfit *b, double x, double y, double tx, double ty)
+{
+	size_t k, at;
+
+	if (2 * (b->nsnap + 1) > b->snapcap) {
+		struct bslot *old = b->snap;
+		size_t oldcap = b->snapcap;
+
+		b->snapcap = oldcap ? 2 * oldcap : 64;
+		b->snap = xcalloc(b->snapcap, sizeof(*b->snap));
+		for (k = 0; k < oldcap; k++)
+			if (old[k].id != 0)
+				b->snap[bslot(b->snap, b->snapcap, old[k].x,
+				    old[k].y)] = old[k];
+		free(old);
+		b->snapto = xreallocarray(b->snapto, b->snapcap,
+		    sizeof(*b->snapto));
+	}
+	at = bslot(b->snap, b->snapcap, x, y);
+	if (b->snap[at].id == 0) {
+		b->snap[at].x = x;
+		b->snap[at].y = y;
+		b->snap[at].id = (uint32_t)++b->nsnap;
+	}
+	b->snapto[b->snap[at].id - 1].x = tx;
+	b->snapto[b->snap[at].id - 1].y = ty;
+}
+
+/* The point a loop takes for (x, y). */
+static struct point
+snapped(const struct bfit *b, double x, double y)
+{
+	struct point p = { x, y };
+	size_t at;
+
+	if (b->nsnap > 0 && b->snap[at = bslot(b->snap, b->snapcap, x,
+	    y)].id != 0)
+		p = b->snapto[b->snap[at].id - 1];
+	return p;
+}
+
+/*
+ * A ring edge that passes a grid corner closer than its crossing of the
+ * grid line can be rounded crosses the line a few ulps from the corner,
+ * and a ring vertex may lie that close to one: vertices of the mesh that
+ * no triangle between them can make good.  Such a point of a grid line is
+ * taken to be the corner, where the nearest line across meets it, in
+ * every loop that has it: the boundary moves by those few ulps.
+ */
+static void
+snaplines(struct bfit *b, int vertical)
+{
+	struct linept *a = vertical ? b->vline : b->hline;
+	size_t n = vertical ? b->nvline : b->nhline, i;
+	double to, big;
+
+	for (i = 0; i < n; i++) {
+		to = nearestline(b, !vertical, a[i].pos);
+		big = fmax(fabs(a[i].pos), fabs(a[i].line));
+		if (to == a[i].pos || fabs(to - a[i].pos) > ldexp(big, -46))
+			continue;
+		if (vertical)
+			snapput(b, a[i].line, a[i].pos, a[i].line, to);
+		else
+			snapput(b, a[i].pos, a[i].line, to, a[i].line);
+		a[i].pos = to;
+	}
+	sortline(a, &n);
+	if (vertical)
+		b->nvline = n;
+	else
+		b->nhline = n;
+}
+
+/*
  * The loops of every kept leaf, checked against the rings, and the index
  * of their points on the cells' sides.
  */
@@ -256,6 +358,8 @@ bfitloops(struct mesh *m)
 	}
 	sortline(b->vline, &b->nvline);
 	sortline(b->hline, &b->nhline);
+	snaplines(b, 1);
+	snaplines(b, 0);
 }
 
 static void
@@ -358,6 +462,9 @@ bfittemplate(struct mesh *m, const struct leaf *l, const double x[2],
 			mask |= 1 << side;
 		else if (at[side + 1] - at[side] != 1)
 			return 0;
+	/* a hanging midpoint's template has arctan 1/2: under -a, the band */
+	if (mask != 0 && m->minangle > TEMPLATE_ANGLE)
+		return 0;
 	for (i = 0; i < m->bymask[mask].nel; i++) {
 		const struct shape *sh = &m->bymask[mask].el[i];
 
@@ -421,9 +528,14 @@ leafpoly(struct bfit *b, size_t i, const double x[2], const double y[2])
 	    at += b->llen[j++]) {
 		start = b->npoly;
 		for (k = 0; k < b->llen[j]; k++) {
-			struct point p = b->lpts[at + k];
-			struct point q = b->lpts[at + (k + 1) % b->llen[j]];
+			struct point p = snapped(b, b->lpts[at + k].x,
+			    b->lpts[at + k].y);
+			struct point q = snapped(b, b->lpts[at + (k + 1) %
+			    b->llen[j]].x, b->lpts[at + (k + 1) %
+			    b->llen[j]].y);
 
+			if (p.x == q.x && p.y == q.y)
+				continue;	/* a side snapped away */
 			addpoly(b, p.x, p.y, b->lring[at + k]);
 			if (p.x == q.x && (p.x == x[0] || p.x == x[1]))
 				takein(b, 1, p.x, p.y, q.y);
@@ -460,8 +572,10 @@ meshbfit(struct mesh *m, size_t i)
 
 	leafbox(m, l, x, y);
 	leafpoly(b, i, x, y);
-	if (l->class == 'F' && bfittemplate(m, l, x, y))
+	if (l->class == 'F' && bfittemplate(m, l, x, y)) {
+		b->templated[i] = 1;
 		return;
+	}
 	ntri = b->nplen > 0 ? earclip_region(b->ear, b->poly, b->plen, b->nplen,
 	    &tri) : 0;
 	if (ntri == (size_t)-1)
@@ -493,11 +607,14 @@ bfitmesh(struct mesh *m)
 	b->ear = earclip_new();
 	bfitloops(m);
 	b->elstart = xreallocarray(NULL, m->nleaves + 1, sizeof(*b->elstart));
+	b->templated = xcalloc(m->nleaves + 1, 1);
 	for (i = 0; i < m->nleaves; i++) {
 		b->elstart[i] = m->nelems;
 		meshbfit(m, i);
 	}
 	b->elstart[m->nleaves] = m->nelems;
+	if (m->minangle > 0)
+		refine(m);
 	/* -t changes the elements: their boundary is walked again after */
 	checkboundary(m, m->format != QTREE && !joining);
 	if (joining)

@@ -145,6 +145,18 @@ ringalong(struct bfit *bf, struct point a, struct point b)
 	return 0;
 }
 
+/* The ring that side a-b runs along, either way, or 0. */
+uint32_t
+sidering(struct mesh *m, uint32_t a, uint32_t b)
+{
+	uint32_t ring;
+
+	if ((ring = sideget(&m->b.ringsides, a, b)) == 0 &&
+	    (ring = sideget(&m->b.ringsides, b, a)) == 0)
+		ring = ringalong(&m->b, m->b.bv[a - 1], m->b.bv[b - 1]);
+	return ring;
+}
+
 /* Every element's sides, each as its element runs, into sm. */
 void
 putsides(const struct mesh *m, struct sidemap *sm)
@@ -181,10 +193,7 @@ boundarysides(struct mesh *m, void (*each)(struct mesh *, uint32_t,
 			if (sideget(&all, b, a) != 0)
 				continue;
 			/* a piece taken backwards: rings that cross */
-			if ((ring = sideget(&m->b.ringsides, a, b)) == 0 &&
-			    (ring = sideget(&m->b.ringsides, b, a)) == 0)
-				ring = ringalong(&m->b, m->b.bv[a - 1],
-				    m->b.bv[b - 1]);
+			ring = sidering(m, a, b);
 			each(m, a, b, ring);
 		}
 	free(all.slot);

@@ -16,6 +16,12 @@
 #include "qtree.h"
 #include "qtmesh.h"
 
+/*
+ * -a: past 30 degrees Ruppert's refinement is no longer sure to end (its
+ * proof holds to 20.7, and in practice to about 33)
+ */
+#define MAXANGLE	30.0
+
 /* The formats of -f, in the order of QTREE, MSH, VTK and TRIANGLE. */
 static const struct writer {
 	const char	*name;
@@ -31,8 +37,8 @@ static const struct writer {
 static void
 usage(int help)
 {
-	usageexit(help, "usage: qtmesh [-bHhrTv] [-c classes] [-f format] "
-	    "[-o basename] [-t fraction] [file]\n");
+	usageexit(help, "usage: qtmesh [-bHhrTv] [-a angle] [-c classes] "
+	    "[-f format] [-o basename] [-t fraction] [file]\n");
 }
 
 /* The format named, as its index in writers. */
@@ -54,15 +60,23 @@ formatnamed(const char *name)
 	return -1;
 }
 
-/* The options into m; 1 when -c was given. */
+/* The options into m; 1 when -c was given, 2 when -a was. */
 static int
 options(struct mesh *m, int argc, char *argv[])
 {
 	const char *end;
 	int ch, cflag = 0;
 
-	while ((ch = getopt(argc, argv, "HTbc:f:o:rt:vh")) != -1)
+	while ((ch = getopt(argc, argv, "HTa:bc:f:o:rt:vh")) != -1)
 		switch (ch) {
+		case 'a':
+			if (parsereal(optarg, &end, &m->minangle) < 0 ||
+			    *end != '\0' || !(m->minangle >= 0 &&
+			    m->minangle <= MAXANGLE))
+				die(2, "-a: not an angle from 0 to %g degrees: "
+				    "%s", MAXANGLE, optarg);
+			cflag |= 2;
+			break;
 		case 'b':
 			m->bfit = 1;
 			break;
@@ -74,7 +88,7 @@ options(struct mesh *m, int argc, char *argv[])
 			break;
 		case 'c':
 			m->keep = cell_optclasses(optarg);
-			cflag = 1;
+			cflag |= 1;
 			break;
 		case 'f':
 			m->format = formatnamed(optarg);
@@ -109,9 +123,16 @@ checkoptions(struct mesh *m, int cflag)
 		    "-o is for -f triangle only");
 	if (m->tfrac >= 0 && !m->bfit)
 		die(2, "-t joins the cut pieces of -b: not without it");
-	if (m->bfit && (!m->conform || cflag))
+	if ((cflag & 2) && !m->bfit)
+		die(2, "-a bounds the angles of -b: not without it");
+	if (m->tfrac >= 0 && (cflag & 2) && m->minangle > 0)
+		die(2, "-t joins the pieces of the cut as it is: -a 0 or no "
+		    "-a with it");
+	if (m->tfrac >= 0)
+		m->minangle = 0;
+	if (m->bfit && (!m->conform || (cflag & 1)))
 		die(2, "-b meshes the region, from the F and P leaves: not "
-		    "with %s", cflag ? "-c" : "-H");
+		    "with %s", (cflag & 1) ? "-c" : "-H");
 	if (m->format == TRIANGLE)
 		m->alltri = 1;
 }
@@ -230,6 +251,7 @@ main(int argc, char *argv[])
 	m.conform = 1;
 	m.format = QTREE;
 	m.tfrac = -1;
+	m.minangle = 20;
 	cflag = options(&m, argc, argv);
 	argc -= optind;
 	argv += optind;

@@ -14,6 +14,9 @@
 
 enum { QTREE, MSH, VTK, TRIANGLE };	/* -f: main.c's table, in order */
 
+/* The smallest angle of the templates, arctan 1/2, in degrees. */
+#define TEMPLATE_ANGLE	26.565051177077990
+
 /*
  * An element of a template: points of a leaf numbered counter-clockwise
  * from the lower left corner, 0 to 7, corners even and side midpoints odd
@@ -121,8 +124,12 @@ struct bfit {
 	size_t		*leafloops;	/* leaf i: loops [i] to [i + 1] */
 	size_t		*leafpts;	/* leaf i: its loops' points from */
 	struct linept	*vline, *hline;
+	struct bslot	*snap;	/* crossings taken as corners: id - 1 ... */
+	struct point	*snapto;	/* ... into snapto */
+	size_t		 nsnap, snapcap;
 	size_t		 nvline, nhline, vlinecap, hlinecap;
 	size_t		*elstart;	/* leaf i: elements [i] to [i + 1] */
+	unsigned char	*templated;	/* leaf i: meshed by the templates */
 	struct point	*poly;	/* the loops of one leaf, points taken in */
 	size_t		 npoly, polycap, *plen, nplen, plencap;
 	/* per point of lpts and poly: the ring the loop runs along, or 0 */
@@ -158,6 +165,7 @@ struct mesh {
 	int		 format;	/* -f: QTREE, MSH, VTK or TRIANGLE */
 	int		 bfit;		/* -b */
 	double		 tfrac;		/* -t, or -1 */
+	double		 minangle;	/* -a, in degrees; 0: none */
 	const char	*outbase;	/* -o */
 	const char	*inname;
 	struct universe	 u;
@@ -196,8 +204,12 @@ void	 setelem(const struct bfit *, struct elem *, const uint32_t *, int);
 void	 sideput(struct sidemap *, uint32_t, uint32_t, uint32_t);
 uint32_t sideget(const struct sidemap *, uint32_t, uint32_t);
 void	 putsides(const struct mesh *, struct sidemap *);
+uint32_t sidering(struct mesh *, uint32_t, uint32_t);
 void	 checkboundary(struct mesh *, int);
 void	 bfitboundary(struct mesh *);
+
+/* refine.c: -b's triangles refined to the angle bound (-a) */
+void	 refine(struct mesh *);
 
 /* join.c: -t, small pieces joined to their neighbours */
 void	 jointiny(struct mesh *);
