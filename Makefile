@@ -13,14 +13,16 @@ BIN = polyread qtsplit qtleaves qtstats qt2svg qtcat qtmesh qtbalance qtbool
 MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
 	man/qt2svg.1 man/qtcat.1 man/qtmesh.1 man/qtbalance.1 man/qtbool.1
 MAN5 = man/qtree.5
+QTREEH = lib/qtree.h lib/arcfilter.h	# the public header and what it includes
 LIBOBJ = lib/msg.o lib/hugepage.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
 	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
-	lib/pow5.o lib/op.o lib/arc.o lib/cut.o lib/earclip.o
+	lib/pow5.o lib/op.o lib/arc.o lib/arccheck.o lib/bigint.o lib/cut.o \
+	lib/earclip.o lib/celltext.o lib/readhead.o
 
 all: $(BIN)
 
-$(LIBOBJ): lib/qtree.h
-$(LIBOBJ): lib/internal.h
+$(LIBOBJ): $(QTREEH)
+$(LIBOBJ): lib/num.h lib/celltext.h lib/inline.h lib/exact.h lib/reader.h
 lib/libqtree.a: $(LIBOBJ)
 	rm -f $@
 	ar rc $@ $(LIBOBJ)
@@ -34,7 +36,8 @@ lib/libqtree.a: $(LIBOBJ)
 POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
 	tools/polyread/brep.o tools/polyread/xy.o tools/polyread/wkt.o \
 	tools/polyread/poly.o tools/polyread/csv.o tools/polyread/geojson.o \
-	tools/polyread/valid.o tools/polyread/sweep.o tools/polyread/curve.o
+	tools/polyread/valid.o tools/polyread/sweep.o tools/polyread/curve.o \
+	tools/polyread/touch.o
 # So has qtmesh.
 QTMESHOBJ = tools/qtmesh/main.o tools/qtmesh/tree.o tools/qtmesh/conform.o \
 	tools/qtmesh/bfit.o tools/qtmesh/boundary.o tools/qtmesh/join.o \
@@ -54,7 +57,7 @@ qtstats: tools/qtstats.o
 QT2SVGOBJ = tools/qt2svg/main.o tools/qt2svg/out.o tools/qt2svg/window.o \
 	tools/qt2svg/leaves.o tools/qt2svg/rings.o tools/qt2svg/mesh.o \
 	tools/qt2svg/quality.o tools/qt2svg/legend.o
-$(QT2SVGOBJ): lib/qtree.h tools/qt2svg/qt2svg.h
+$(QT2SVGOBJ): $(QTREEH) tools/qt2svg/qt2svg.h
 qt2svg: $(QT2SVGOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QT2SVGOBJ) lib/libqtree.a $(LDLIBS)
 qtcat: tools/qtcat.o
@@ -65,11 +68,11 @@ qtbalance: tools/qtbalance.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbalance.o lib/libqtree.a $(LDLIBS)
 qtbool: tools/qtbool.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbool.o lib/libqtree.a $(LDLIBS)
-$(POLYREADOBJ): lib/qtree.h tools/polyread/polyread.h
-$(QTMESHOBJ): lib/qtree.h tools/qtmesh/qtmesh.h
+$(POLYREADOBJ): $(QTREEH) tools/polyread/polyread.h
+$(QTMESHOBJ): $(QTREEH) tools/qtmesh/qtmesh.h
 tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
 tools/qtcat.o tools/qtbalance.o \
-tools/qtbool.o: lib/qtree.h
+tools/qtbool.o: $(QTREEH)
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,
 # fmtbench times it; numcheck checks parsereal against strtod, numbench

@@ -30,311 +30,7 @@
 #include <string.h>
 
 #include "qtree.h"
-
-/* Integers of at most BIGN 32-bit limbs, sign and magnitude. */
-#define BIGSHIFT	400
-#define BIGN		384
-
-struct big {
-	int		 neg, n;	/* n limbs, the top one nonzero */
-	uint32_t	 d[BIGN];
-};
-
-static void
-big_fromdouble(struct big *z, double v)
-{
-	int e, s, w, b;
-	uint64_t m;
-
-	z->neg = v < 0;
-	z->n = 0;
-	if (v == 0)
-		return;
-	m = (uint64_t)ldexp(frexp(fabs(v), &e), 53);
-	s = e - 53 + BIGSHIFT;	/* v = m 2^(e-53); >= 0 for coordinates */
-	if (s < 0)
-		die(1, "exact arithmetic: %g is out of range", v);
-	w = s / 32, b = s % 32;
-	memset(z->d, 0, (w + 3) * sizeof(z->d[0]));
-	z->d[w] = (uint32_t)(m << b);
-	z->d[w + 1] = (uint32_t)((m << b) >> 32);
-	z->d[w + 2] = b > 0 ? (uint32_t)(m >> (64 - b)) : 0;
-	z->n = w + 3;
-	while (z->n > 0 && z->d[z->n - 1] == 0)
-		z->n--;
-}
-
-static int
-mag_cmp(const struct big *a, const struct big *b)
-{
-	int i;
-
-	if (a->n != b->n)
-		return a->n < b->n ? -1 : 1;
-	for (i = a->n - 1; i >= 0; i--)
-		if (a->d[i] != b->d[i])
-			return a->d[i] < b->d[i] ? -1 : 1;
-	return 0;
-}
-
-/* |z| = |a| + |b| */
-static void
-mag_add(struct big *z, const struct big *a, const struct big *b)
-{
-	uint64_t c = 0;
-	int i, n = a->n > b->n ? a->n : b->n;
-
-	for (i = 0; i < n; i++) {
-		c += (uint64_t)(i < a->n ? a->d[i] : 0) +
-		    (i < b->n ? b->d[i] : 0);
-		z->d[i] = (uint32_t)c;
-		c >>= 32;
-	}
-	if (c)
-		z->d[n++] = (uint32_t)c;
-	z->n = n;
-}
-
-/* |z| = |a| - |b|, |a| >= |b| */
-static void
-mag_sub(struct big *z, const struct big *a, const struct big *b)
-{
-	int64_t c = 0;
-	int i;
-
-	for (i = 0; i < a->n; i++) {
-		c += (int64_t)a->d[i] - (i < b->n ? b->d[i] : 0);
-		z->d[i] = (uint32_t)c;
-		c = c < 0 ? -1 : 0;
-	}
-	z->n = a->n;
-	while (z->n > 0 && z->d[z->n - 1] == 0)
-		z->n--;
-}
-
-/* z = a + s b, s = 1 or -1; z may be a or b. */
-static void
-big_addsub(struct big *z, const struct big *a, const struct big *b, int s)
-{
-	int bneg = s < 0 ? !b->neg : b->neg;
-
-	if (a->neg == bneg) {
-		mag_add(z, a, b);
-		z->neg = bneg;
-	} else if (mag_cmp(a, b) >= 0) {
-		int neg = a->neg;
-
-		mag_sub(z, a, b);
-		z->neg = neg;
-	} else {
-		mag_sub(z, b, a);
-		z->neg = bneg;
-	}
-	if (z->n == 0)
-		z->neg = 0;
-}
-
-static void
-big_mul(struct big *z, const struct big *a, const struct big *b)
-{
-	uint32_t t[BIGN];
-	int i, j, n = a->n + b->n;
-
-	if (a->n == 0 || b->n == 0) {
-		z->n = z->neg = 0;
-		return;
-	}
-	if (n > BIGN) {		/* not for coordinates in range */
-		die(1, "exact arithmetic: %d limbs", n);
-		return;
-	}
-	memset(t, 0, n * sizeof(t[0]));
-	for (i = 0; i < a->n; i++) {
-		uint64_t c = 0;
-
-		for (j = 0; j < b->n; j++) {
-			c += (uint64_t)a->d[i] * b->d[j] + t[i + j];
-			t[i + j] = (uint32_t)c;
-			c >>= 32;
-		}
-		t[i + b->n] = (uint32_t)c;
-	}
-	memcpy(z->d, t, n * sizeof(t[0]));
-	z->n = n;
-	while (z->n > 0 && z->d[z->n - 1] == 0)
-		z->n--;
-	z->neg = a->neg != b->neg;
-}
-
-static int
-big_sign(const struct big *a)
-{
-	return a->n == 0 ? 0 : a->neg ? -1 : 1;
-}
-
-static void
-big_diff(struct big *z, double a, double b)
-{
-	struct big t;
-
-	big_fromdouble(z, a);
-	big_fromdouble(&t, b);
-	big_addsub(z, z, &t, -1);
-}
-
-/*
- * Intervals.  Each operation's result is widened by 2^-50 of its
- * magnitude and 2^-1060: more than the rounding of the operation and of
- * the widening itself, in the subnormal range too.  An overflow gives an
- * infinite bound, a 0 times infinity NaN: both leave the sign undecided.
- */
-
-static inline struct interval
-widen(double lo, double hi)
-{
-	struct interval r;
-
-	r.lo = lo - (fabs(lo) * 0x1p-50 + 0x1p-1060);
-	r.hi = hi + (fabs(hi) * 0x1p-50 + 0x1p-1060);
-	return r;
-}
-
-static inline struct interval
-iv_diff(double a, double b)
-{
-	double d = a - b;
-
-	return widen(d, d);
-}
-
-static inline struct interval
-iv_add(struct interval a, struct interval b)
-{
-	return widen(a.lo + b.lo, a.hi + b.hi);
-}
-
-static inline struct interval
-iv_sub(struct interval a, struct interval b)
-{
-	return widen(a.lo - b.hi, a.hi - b.lo);
-}
-
-static inline struct interval
-iv_mul(struct interval a, struct interval b)
-{
-	double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo,
-	    p4 = a.hi * b.hi;
-
-	if (p1 != p1 || p2 != p2 || p3 != p3 || p4 != p4)	/* NaN */
-		return widen(-INFINITY, INFINITY);
-	return widen(fmin(fmin(p1, p2), fmin(p3, p4)),
-	    fmax(fmax(p1, p2), fmax(p3, p4)));
-}
-
-static inline struct interval
-iv_scale(struct interval a, double s)	/* s a power of two, positive */
-{
-	struct interval r = { a.lo * s, a.hi * s };
-
-	return widen(r.lo, r.hi);
-}
-
-/* a / b, b not holding 0 */
-static inline struct interval
-iv_div(struct interval a, struct interval b)
-{
-	double p1 = a.lo / b.lo, p2 = a.lo / b.hi, p3 = a.hi / b.lo,
-	    p4 = a.hi / b.hi;
-
-	if (!(b.lo > 0 || b.hi < 0) || p1 != p1 || p2 != p2 || p3 != p3 ||
-	    p4 != p4)
-		return widen(-INFINITY, INFINITY);
-	return widen(fmin(fmin(p1, p2), fmin(p3, p4)),
-	    fmax(fmax(p1, p2), fmax(p3, p4)));
-}
-
-/* 1, -1, or 0 when the interval cannot tell. */
-static inline int
-iv_sign(struct interval a)
-{
-	return a.lo > 0 ? 1 : a.hi < 0 ? -1 : 0;
-}
-
-/* The arc's quantities in integers, for the exact fallback. */
-struct bigarc {
-	struct big	 bx, by, mx, my, d, ux, uy;
-};
-
-/* z / 2^s, z a multiple of 2^s */
-static void
-big_shr(struct big *z, int s)
-{
-	int w = s / 32, b = s % 32, i;
-
-	if (s == 0)
-		return;
-	if (w >= z->n) {
-		z->n = z->neg = 0;
-		return;
-	}
-	for (i = 0; i + w < z->n; i++)
-		z->d[i] = (z->d[i + w] >> b) | (b > 0 && i + w + 1 < z->n ?
-		    z->d[i + w + 1] << (32 - b) : 0);
-	z->n -= w;
-	while (z->n > 0 && z->d[z->n - 1] == 0)
-		z->n--;
-	if (z->n == 0)
-		z->neg = 0;
-}
-
-/* The exponent of v's lowest set bit, v != 0: v is a multiple of 2^that. */
-static int
-lowbit(double v)
-{
-	int e, b;
-	uint64_t m = (uint64_t)ldexp(frexp(fabs(v), &e), 53);
-
-	for (b = e - 53; (m & 1) == 0; m >>= 1)
-		b++;
-	return b;
-}
-
-/* bigarc of the differences divided by 2^s, which they are multiples of */
-static void
-bigarcshift(const struct arc *a, struct bigarc *z, int s)
-{
-	struct big b2, m2, t;
-
-	big_diff(&z->bx, a->b.x, a->a.x);
-	big_diff(&z->by, a->b.y, a->a.y);
-	big_diff(&z->mx, a->m.x, a->a.x);
-	big_diff(&z->my, a->m.y, a->a.y);
-	big_shr(&z->bx, s);
-	big_shr(&z->by, s);
-	big_shr(&z->mx, s);
-	big_shr(&z->my, s);
-	big_mul(&z->d, &z->bx, &z->my);
-	big_mul(&t, &z->by, &z->mx);
-	big_addsub(&z->d, &z->d, &t, -1);
-	big_mul(&b2, &z->bx, &z->bx);
-	big_mul(&t, &z->by, &z->by);
-	big_addsub(&b2, &b2, &t, 1);
-	big_mul(&m2, &z->mx, &z->mx);
-	big_mul(&t, &z->my, &z->my);
-	big_addsub(&m2, &m2, &t, 1);
-	big_mul(&z->ux, &z->my, &b2);
-	big_mul(&t, &z->by, &m2);
-	big_addsub(&z->ux, &z->ux, &t, -1);
-	big_mul(&z->uy, &z->bx, &m2);
-	big_mul(&t, &z->mx, &b2);
-	big_addsub(&z->uy, &z->uy, &t, -1);
-}
-
-static void
-bigarc(const struct arc *a, struct bigarc *z)
-{
-	bigarcshift(a, z, 0);
-}
+#include "exact.h"
 
 /*
  * The floating filter of arc_power: an enclosure of C, (cx, cy) +- ec in
@@ -345,27 +41,28 @@ bigarc(const struct arc *a, struct bigarc *z)
 static void
 filter(struct arc *a)
 {
-	struct interval two = { 2, 2 }, d2 = iv_mul(two, a->id), cx, cy, r2;
+	struct interval two = { 2, 2 }, d2 = iv_mul(two, a->f.id), cx, cy, r2;
 	double ex, ey, rlo, rhi;
 
-	cx = iv_add(widen(a->a.x, a->a.x), iv_div(a->iux, d2));
-	cy = iv_add(widen(a->a.y, a->a.y), iv_div(a->iuy, d2));
-	r2 = iv_div(iv_add(iv_mul(a->iux, a->iux), iv_mul(a->iuy, a->iuy)),
+	cx = iv_add(iv_widen(a->a.x, a->a.x), iv_div(a->f.iux, d2));
+	cy = iv_add(iv_widen(a->a.y, a->a.y), iv_div(a->f.iuy, d2));
+	r2 = iv_div(iv_add(iv_mul(a->f.iux, a->f.iux),
+	    iv_mul(a->f.iuy, a->f.iuy)),
 	    iv_mul(d2, d2));
-	a->cx = 0.5 * cx.lo + 0.5 * cx.hi;
-	a->cy = 0.5 * cy.lo + 0.5 * cy.hi;
-	ex = fmax(a->cx - cx.lo, cx.hi - a->cx);
-	ey = fmax(a->cy - cy.lo, cy.hi - a->cy);
-	a->ec = fmax(ex, ey) * (1 + 0x1p-40) + 0x1p-1060;
-	a->tin = -1;
-	a->tout = INFINITY;
-	if (!(a->ec < INFINITY) || !(r2.hi < INFINITY) || !(r2.lo >= 0))
+	a->f.cx = 0.5 * cx.lo + 0.5 * cx.hi;
+	a->f.cy = 0.5 * cy.lo + 0.5 * cy.hi;
+	ex = fmax(a->f.cx - cx.lo, cx.hi - a->f.cx);
+	ey = fmax(a->f.cy - cy.lo, cy.hi - a->f.cy);
+	a->f.ec = fmax(ex, ey) * (1 + 0x1p-40) + 0x1p-1060;
+	a->f.tin = -1;
+	a->f.tout = INFINITY;
+	if (!(a->f.ec < INFINITY) || !(r2.hi < INFINITY) || !(r2.lo >= 0))
 		return;
-	rlo = sqrt(r2.lo) * (1 - 0x1p-40) - 1.5 * a->ec;
-	rhi = sqrt(r2.hi) * (1 + 0x1p-40) + 1.5 * a->ec;
-	a->tout = rhi * rhi * (1 + 0x1p-40);
+	rlo = sqrt(r2.lo) * (1 - 0x1p-40) - 1.5 * a->f.ec;
+	rhi = sqrt(r2.hi) * (1 + 0x1p-40) + 1.5 * a->f.ec;
+	a->f.tout = rhi * rhi * (1 + 0x1p-40);
 	if (rlo > 0)
-		a->tin = rlo * rlo * (1 - 0x1p-40);
+		a->f.tin = rlo * rlo * (1 - 0x1p-40);
 }
 
 int
@@ -380,20 +77,23 @@ arc_init(struct arc *a, struct point pa, struct point pm, struct point pb)
 	a->sd = orient2d(pa.x, pa.y, pb.x, pb.y, pm.x, pm.y);
 	if (a->sd == 0)
 		return -1;
-	a->ibx = iv_diff(pb.x, pa.x);
-	a->iby = iv_diff(pb.y, pa.y);
-	a->imx = iv_diff(pm.x, pa.x);
-	a->imy = iv_diff(pm.y, pa.y);
-	a->id = iv_sub(iv_mul(a->ibx, a->imy), iv_mul(a->iby, a->imx));
-	b2 = iv_add(iv_mul(a->ibx, a->ibx), iv_mul(a->iby, a->iby));
-	m2 = iv_add(iv_mul(a->imx, a->imx), iv_mul(a->imy, a->imy));
-	a->iux = iv_sub(iv_mul(a->imy, b2), iv_mul(a->iby, m2));
-	a->iuy = iv_sub(iv_mul(a->ibx, m2), iv_mul(a->imx, b2));
+	a->f.ibx = iv_diff(pb.x, pa.x);
+	a->f.iby = iv_diff(pb.y, pa.y);
+	a->f.imx = iv_diff(pm.x, pa.x);
+	a->f.imy = iv_diff(pm.y, pa.y);
+	a->f.id = iv_sub(iv_mul(a->f.ibx, a->f.imy),
+	    iv_mul(a->f.iby, a->f.imx));
+	b2 = iv_add(iv_mul(a->f.ibx, a->f.ibx), iv_mul(a->f.iby, a->f.iby));
+	m2 = iv_add(iv_mul(a->f.imx, a->f.imx), iv_mul(a->f.imy, a->f.imy));
+	a->f.iux = iv_sub(iv_mul(a->f.imy, b2), iv_mul(a->f.iby, m2));
+	a->f.iuy = iv_sub(iv_mul(a->f.ibx, m2), iv_mul(a->f.imx, b2));
 	a->oc = arc_centreside(a);
 	filter(a);
 	/* a centre on doubles, as most circles given by hand have it */
-	a->exactc[0] = coordok(a->cx) && arc_cmpcentre(a, 0, a->cx) == 0;
-	a->exactc[1] = coordok(a->cy) && arc_cmpcentre(a, 1, a->cy) == 0;
+	a->f.exactc[0] = parsecoordok(a->f.cx) &&
+	    arc_cmpcentre(a, 0, a->f.cx) == 0;
+	a->f.exactc[1] = parsecoordok(a->f.cy) &&
+	    arc_cmpcentre(a, 1, a->f.cy) == 0;
 	/*
 	 * The box: A, B and those of the circle's extreme points C +- (r, 0),
 	 * C +- (0, r) that the arc may hold, from the enclosures of C and r:
@@ -402,21 +102,21 @@ arc_init(struct arc *a, struct point pa, struct point pm, struct point pb)
 	 */
 	a->xmin = fmin(pa.x, pb.x), a->xmax = fmax(pa.x, pb.x);
 	a->ymin = fmin(pa.y, pb.y), a->ymax = fmax(pa.y, pb.y);
-	if (!(a->tout < INFINITY) || !(a->ec < INFINITY)) {
+	if (!(a->f.tout < INFINITY) || !(a->f.ec < INFINITY)) {
 		a->xmin = a->ymin = -INFINITY;
 		a->xmax = a->ymax = INFINITY;
 		return 0;
 	}
-	r = sqrt(a->tout) * (1 + 0x1p-40) + a->ec;
+	r = sqrt(a->f.tout) * (1 + 0x1p-40) + a->f.ec;
 	for (k = 0; k < 4; k++) {
 		struct interval ex, ey, o;
 		double dx = k == 0 ? r : k == 1 ? -r : 0;
 		double dy = k == 2 ? r : k == 3 ? -r : 0;
 
-		ex = widen(a->cx + dx - a->ec, a->cx + dx + a->ec);
-		ey = widen(a->cy + dy - a->ec, a->cy + dy + a->ec);
-		o = iv_sub(iv_mul(a->ibx, iv_sub(ey, widen(pa.y, pa.y))),
-		    iv_mul(a->iby, iv_sub(ex, widen(pa.x, pa.x))));
+		ex = iv_widen(a->f.cx + dx - a->f.ec, a->f.cx + dx + a->f.ec);
+		ey = iv_widen(a->f.cy + dy - a->f.ec, a->f.cy + dy + a->f.ec);
+		o = iv_sub(iv_mul(a->f.ibx, iv_sub(ey, iv_widen(pa.y, pa.y))),
+		    iv_mul(a->f.iby, iv_sub(ex, iv_widen(pa.x, pa.x))));
 		if (iv_sign(o) == -a->sd)
 			continue;
 		a->xmin = fmin(a->xmin, ex.lo), a->xmax = fmax(a->xmax, ex.hi);
@@ -436,17 +136,17 @@ powerat(const struct arc *a, double x, double y)
 	struct xsum t;
 	int s;
 
-	xs_init(&t);
-	xs_addprod(&t, x, x);
-	xs_addprod(&t, -2 * x, a->cx);
-	xs_addprod(&t, y, y);
-	xs_addprod(&t, -2 * y, a->cy);
-	xs_addprod(&t, -a->a.x, a->a.x);
-	xs_addprod(&t, 2 * a->a.x, a->cx);
-	xs_addprod(&t, -a->a.y, a->a.y);
-	xs_addprod(&t, 2 * a->a.y, a->cy);
-	s = xs_sign(&t);
-	xs_free(&t);
+	area_init(&t);
+	area_addprod(&t, x, x);
+	area_addprod(&t, -2 * x, a->f.cx);
+	area_addprod(&t, y, y);
+	area_addprod(&t, -2 * y, a->f.cy);
+	area_addprod(&t, -a->a.x, a->a.x);
+	area_addprod(&t, 2 * a->a.x, a->f.cx);
+	area_addprod(&t, -a->a.y, a->a.y);
+	area_addprod(&t, 2 * a->a.y, a->f.cy);
+	s = area_sign(&t);
+	area_free(&t);
 	return s;
 }
 
@@ -471,31 +171,31 @@ arc_power(const struct arc *a, double x, double y)
 {
 	struct interval px, py, v;
 	struct bigarc z;
-	struct big bx, by, t, u;
-	double dx = x - a->cx, dy = y - a->cy;
+	struct bigint bx, by, t, u;
+	double dx = x - a->f.cx, dy = y - a->f.cy;
 	int s;
 
-	if ((s = powerfilter(dx * dx + dy * dy, a->tin, a->tout)) != 0)
+	if ((s = powerfilter(dx * dx + dy * dy, a->f.tin, a->f.tout)) != 0)
 		return s;
 	px = iv_diff(x, a->a.x), py = iv_diff(y, a->a.y);
-	v = iv_sub(iv_mul(a->id, iv_add(iv_mul(px, px), iv_mul(py, py))),
-	    iv_add(iv_mul(px, a->iux), iv_mul(py, a->iuy)));
+	v = iv_sub(iv_mul(a->f.id, iv_add(iv_mul(px, px), iv_mul(py, py))),
+	    iv_add(iv_mul(px, a->f.iux), iv_mul(py, a->f.iuy)));
 	if ((s = iv_sign(v)) != 0)
 		return s * a->sd;
-	if (a->exactc[0] && a->exactc[1])
+	if (a->f.exactc[0] && a->f.exactc[1])
 		return powerat(a, x, y);
-	bigarc(a, &z);
-	big_diff(&bx, x, a->a.x);
-	big_diff(&by, y, a->a.y);
-	big_mul(&t, &bx, &bx);
-	big_mul(&u, &by, &by);
-	big_addsub(&t, &t, &u, 1);
-	big_mul(&t, &t, &z.d);
-	big_mul(&u, &bx, &z.ux);
-	big_addsub(&t, &t, &u, -1);
-	big_mul(&u, &by, &z.uy);
-	big_addsub(&t, &t, &u, -1);
-	return big_sign(&t) * a->sd;
+	bigint_arc(a, &z);
+	bigint_diff(&bx, x, a->a.x);
+	bigint_diff(&by, y, a->a.y);
+	bigint_mul(&t, &bx, &bx);
+	bigint_mul(&u, &by, &by);
+	bigint_addsub(&t, &t, &u, 1);
+	bigint_mul(&t, &t, &z.d);
+	bigint_mul(&u, &bx, &z.ux);
+	bigint_addsub(&t, &t, &u, -1);
+	bigint_mul(&u, &by, &z.uy);
+	bigint_addsub(&t, &t, &u, -1);
+	return bigint_sign(&t) * a->sd;
 }
 
 /*
@@ -507,11 +207,11 @@ arc_powergrid(const struct arc *a, const double gx[3], const double gy[3],
     signed char f[9])
 {
 	/* copies: a store to f, chars, could change *a for all C knows */
-	double dx2[3], dy2[3], tin = a->tin, tout = a->tout;
+	double dx2[3], dy2[3], tin = a->f.tin, tout = a->f.tout;
 	int i, j;
 
 	for (i = 0; i < 3; i++) {
-		double dx = gx[i] - a->cx, dy = gy[i] - a->cy;
+		double dx = gx[i] - a->f.cx, dy = gy[i] - a->f.cy;
 
 		dx2[i] = dx * dx;
 		dy2[i] = dy * dy;
@@ -532,25 +232,25 @@ int
 arc_cmpcentre(const struct arc *a, int axis, double v)
 {
 	struct interval p = axis ? iv_diff(v, a->a.y) : iv_diff(v, a->a.x);
-	struct interval w = iv_sub(iv_scale(iv_mul(a->id, p), 2),
-	    axis ? a->iuy : a->iux);
+	struct interval w = iv_sub(iv_scale(iv_mul(a->f.id, p), 2),
+	    axis ? a->f.iuy : a->f.iux);
 	struct bigarc z;
-	struct big b, t;
+	struct bigint b, t;
 	int s;
 
-	if (a->exactc[axis]) {
-		double c = axis ? a->cy : a->cx;
+	if (a->f.exactc[axis]) {
+		double c = axis ? a->f.cy : a->f.cx;
 
 		return (v > c) - (v < c);
 	}
 	if ((s = iv_sign(w)) != 0)
 		return s * a->sd;
-	bigarc(a, &z);
-	big_diff(&b, v, axis ? a->a.y : a->a.x);
-	big_mul(&t, &z.d, &b);
-	big_addsub(&t, &t, &t, 1);
-	big_addsub(&t, &t, axis ? &z.uy : &z.ux, -1);
-	return big_sign(&t) * a->sd;
+	bigint_arc(a, &z);
+	bigint_diff(&b, v, axis ? a->a.y : a->a.x);
+	bigint_mul(&t, &z.d, &b);
+	bigint_addsub(&t, &t, &t, 1);
+	bigint_addsub(&t, &t, axis ? &z.uy : &z.ux, -1);
+	return bigint_sign(&t) * a->sd;
 }
 
 /*
@@ -561,22 +261,22 @@ static int
 nudge2(const struct arc *a, double y)
 {
 	struct interval p = iv_diff(y, a->a.y), one = { 1, 1 };
-	struct interval w = iv_sub(iv_mul(a->id, iv_add(one, iv_scale(p, 2))),
-	    a->iuy);
+	struct interval w = iv_sub(iv_mul(a->f.id, iv_add(one, iv_scale(p, 2))),
+	    a->f.iuy);
 	struct bigarc z;
-	struct big b, t;
+	struct bigint b, t;
 	int s;
 
 	if ((s = iv_sign(w)) != 0)
 		return s * a->sd;
-	bigarc(a, &z);
-	big_diff(&b, y, a->a.y);
-	big_addsub(&b, &b, &b, 1);
-	big_fromdouble(&t, 1);
-	big_addsub(&b, &b, &t, 1);
-	big_mul(&t, &z.d, &b);
-	big_addsub(&t, &t, &z.uy, -1);
-	return big_sign(&t) * a->sd;
+	bigint_arc(a, &z);
+	bigint_diff(&b, y, a->a.y);
+	bigint_addsub(&b, &b, &b, 1);
+	bigint_fromdouble(&t, 1);
+	bigint_addsub(&b, &b, &t, 1);
+	bigint_mul(&t, &z.d, &b);
+	bigint_addsub(&t, &t, &z.uy, -1);
+	return bigint_sign(&t) * a->sd;
 }
 
 /*
@@ -587,26 +287,28 @@ int
 arc_powerline(const struct arc *a, int axis, double v)
 {
 	struct interval p = axis ? iv_diff(v, a->a.y) : iv_diff(v, a->a.x);
-	struct interval u = axis ? a->iuy : a->iux, o = axis ? a->iux : a->iuy;
-	struct interval dp = iv_scale(iv_mul(a->id, p), 2);
+	struct interval u = axis ? a->f.iuy : a->f.iux;
+	struct interval o = axis ? a->f.iux : a->f.iuy;
+	struct interval dp = iv_scale(iv_mul(a->f.id, p), 2);
 	struct interval w = iv_sub(iv_mul(dp, iv_sub(dp, iv_scale(u, 2))),
 	    iv_mul(o, o));
 	struct bigarc z;
-	struct big b, t, s2;
+	struct bigint b, t, s2;
 	int s;
 
 	if ((s = iv_sign(w)) != 0)
 		return s;
-	bigarc(a, &z);
-	big_diff(&b, v, axis ? a->a.y : a->a.x);
-	big_mul(&t, &z.d, &b);
-	big_addsub(&t, &t, &t, 1);		/* 2 D p */
-	big_addsub(&s2, &t, axis ? &z.uy : &z.ux, -1);
-	big_addsub(&s2, &s2, axis ? &z.uy : &z.ux, -1);	/* 2 D p - 2 U */
-	big_mul(&t, &t, &s2);
-	big_mul(&s2, axis ? &z.ux : &z.uy, axis ? &z.ux : &z.uy);
-	big_addsub(&t, &t, &s2, -1);
-	return big_sign(&t);
+	bigint_arc(a, &z);
+	bigint_diff(&b, v, axis ? a->a.y : a->a.x);
+	bigint_mul(&t, &z.d, &b);
+	bigint_addsub(&t, &t, &t, 1);		/* 2 D p */
+	bigint_addsub(&s2, &t, axis ? &z.uy : &z.ux, -1);
+	/* 2 D p - 2 U */
+	bigint_addsub(&s2, &s2, axis ? &z.uy : &z.ux, -1);
+	bigint_mul(&t, &t, &s2);
+	bigint_mul(&s2, axis ? &z.ux : &z.uy, axis ? &z.ux : &z.uy);
+	bigint_addsub(&t, &t, &s2, -1);
+	return bigint_sign(&t);
 }
 
 /*
@@ -619,40 +321,41 @@ arc_orientline(const struct arc *a, int axis, double v)
 {
 	struct interval w;
 	struct bigarc z;
-	struct big b, t, u;
+	struct bigint b, t, u;
 	int s;
 
 	if (axis == 0)
-		w = iv_sub(iv_mul(a->ibx, a->iuy), iv_scale(iv_mul(a->id,
-		    iv_mul(a->iby, iv_diff(v, a->a.x))), 2));
+		w = iv_sub(iv_mul(a->f.ibx, a->f.iuy), iv_scale(iv_mul(a->f.id,
+		    iv_mul(a->f.iby, iv_diff(v, a->a.x))), 2));
 	else if (axis == 1)
-		w = iv_sub(iv_scale(iv_mul(a->id, iv_mul(a->ibx, iv_diff(v,
-		    a->a.y))), 2), iv_mul(a->iby, a->iux));
+		w = iv_sub(iv_scale(iv_mul(a->f.id, iv_mul(a->f.ibx, iv_diff(v,
+		    a->a.y))), 2), iv_mul(a->f.iby, a->f.iux));
 	else
-		w = iv_sub(iv_mul(a->ibx, a->iuy), iv_mul(a->iby, a->iux));
+		w = iv_sub(iv_mul(a->f.ibx, a->f.iuy),
+		    iv_mul(a->f.iby, a->f.iux));
 	if ((s = iv_sign(w)) != 0)
 		return s * a->sd;
-	bigarc(a, &z);
+	bigint_arc(a, &z);
 	if (axis == 0) {
-		big_mul(&t, &z.bx, &z.uy);
-		big_diff(&b, v, a->a.x);
-		big_mul(&u, &z.by, &b);
-		big_mul(&u, &u, &z.d);
-		big_addsub(&t, &t, &u, -1);
-		big_addsub(&t, &t, &u, -1);
+		bigint_mul(&t, &z.bx, &z.uy);
+		bigint_diff(&b, v, a->a.x);
+		bigint_mul(&u, &z.by, &b);
+		bigint_mul(&u, &u, &z.d);
+		bigint_addsub(&t, &t, &u, -1);
+		bigint_addsub(&t, &t, &u, -1);
 	} else if (axis == 1) {
-		big_diff(&b, v, a->a.y);
-		big_mul(&t, &z.bx, &b);
-		big_mul(&t, &t, &z.d);
-		big_addsub(&t, &t, &t, 1);
-		big_mul(&u, &z.by, &z.ux);
-		big_addsub(&t, &t, &u, -1);
+		bigint_diff(&b, v, a->a.y);
+		bigint_mul(&t, &z.bx, &b);
+		bigint_mul(&t, &t, &z.d);
+		bigint_addsub(&t, &t, &t, 1);
+		bigint_mul(&u, &z.by, &z.ux);
+		bigint_addsub(&t, &t, &u, -1);
 	} else {
-		big_mul(&t, &z.bx, &z.uy);
-		big_mul(&u, &z.by, &z.ux);
-		big_addsub(&t, &t, &u, -1);
+		bigint_mul(&t, &z.bx, &z.uy);
+		bigint_mul(&u, &z.by, &z.ux);
+		bigint_addsub(&t, &t, &u, -1);
 	}
-	return big_sign(&t) * a->sd;
+	return bigint_sign(&t) * a->sd;
 }
 
 int
@@ -752,14 +455,15 @@ arc_nearpower(const struct arc *a, double x0, double y0, double x1,
 	double zx = 0, zy = 0;
 
 	{	/* the disc surely misses K: the filter of arc_power */
-		double l = x0 - a->cx, r = a->cx - x1, b = y0 - a->cy;
-		double t = a->cy - y1;
+		double l = x0 - a->f.cx, r = a->f.cx - x1, b = y0 - a->f.cy;
+		double t = a->f.cy - y1;
 		/* comparisons, not fmax, which libm does not inline */
-		double dx = (l > r ? l : r) - a->ec, dy = (b > t ? b : t) - a->ec;
+		double dx = (l > r ? l : r) - a->f.ec;
+		double dy = (b > t ? b : t) - a->f.ec;
 
 		dx = dx > 0 ? dx : 0;
 		dy = dy > 0 ? dy : 0;
-		if ((dx * dx + dy * dy) * (1 - 0x1p-40) > a->tout + 0x1p-1000)
+		if ((dx * dx + dy * dy) * (1 - 0x1p-40) > a->f.tout + 0x1p-1000)
 			return 1;
 	}
 	/* z: the centre clamped to K, by coordinates */
@@ -799,16 +503,17 @@ int
 arc_boxoff(const struct arc *a, double x0, double y0, double x1, double y1)
 {
 	/* comparisons, not fmax, which libm does not inline */
-	double l = a->cx - x0, r = x1 - a->cx, b = a->cy - y0, t = y1 - a->cy;
-	double nx = (l < 0 ? -l : r < 0 ? -r : 0) - a->ec;
-	double ny = (b < 0 ? -b : t < 0 ? -t : 0) - a->ec;
-	double fx = (l > r ? l : r) + a->ec, fy = (b > t ? b : t) + a->ec;
+	double l = a->f.cx - x0, r = x1 - a->f.cx;
+	double b = a->f.cy - y0, t = y1 - a->f.cy;
+	double nx = (l < 0 ? -l : r < 0 ? -r : 0) - a->f.ec;
+	double ny = (b < 0 ? -b : t < 0 ? -t : 0) - a->f.ec;
+	double fx = (l > r ? l : r) + a->f.ec, fy = (b > t ? b : t) + a->f.ec;
 
 	nx = nx > 0 ? nx : 0;
 	ny = ny > 0 ? ny : 0;
-	if ((nx * nx + ny * ny) * (1 - 0x1p-40) > a->tout + 0x1p-1000)
+	if ((nx * nx + ny * ny) * (1 - 0x1p-40) > a->f.tout + 0x1p-1000)
 		return 1;
-	return (fx * fx + fy * fy) * (1 + 0x1p-40) + 0x1p-1000 < a->tin;
+	return (fx * fx + fy * fy) * (1 + 0x1p-40) + 0x1p-1000 < a->f.tin;
 }
 
 /*
@@ -831,8 +536,8 @@ arc_measures(const struct arc *a, struct arcmeasures *g)
 	double nx = -by / lb * a->sd, ny = bx / lb * a->sd;
 
 	/* h: C's distance from the chord, positive away from the arc */
-	h = -((a->cx - (a->a.x + bx / 2)) * nx + (a->cy - (a->a.y + by / 2)) *
-	    ny);
+	h = -((a->f.cx - (a->a.x + bx / 2)) * nx +
+	    (a->f.cy - (a->a.y + by / 2)) * ny);
 	al = atan2(c, h);
 	r = hypot(c, h);
 	s = sin(al);
@@ -855,387 +560,4 @@ arc_measures(const struct arc *a, struct arcmeasures *g)
 		t = 4 * r * s * s * s / (3 * tms) - r * cos(al);
 	g->gx = a->a.x + bx / 2 + t * nx;
 	g->gy = a->a.y + by / 2 + t * ny;
-}
-
-/*
- * Why three points make no arc, or NULL when they do, in the messages of
- * every reader of arcs; record names what gives an arc in the input.
- */
-const char *
-arc_defect(struct point a, struct point m, struct point b, const char *record)
-{
-	static char msg[96];
-
-	if (orient2d(a.x, a.y, b.x, b.y, m.x, m.y) != 0)
-		return NULL;
-	if (a.x == b.x && a.y == b.y && a.x == m.x && a.y == m.y)
-		return "arc of zero radius: its three points are one";
-	if (a.x == b.x && a.y == b.y)
-		return "arc from a vertex back to itself (a circle is two arcs)";
-	if ((m.x == a.x && m.y == a.y) || (m.x == b.x && m.y == b.y))
-		return "arc's middle point is one of its ends";
-	snprintf(msg, sizeof(msg), "arc through three points on a line (a "
-	    "straight edge needs no %s)", record);
-	return msg;
-}
-
-/* big = (a - b) . (c - d) or cross (a - b) x (c - d), from doubles */
-static void
-big_dot(struct big *z, const struct big *ux, const struct big *uy,
-    const struct big *vx, const struct big *vy, int cross)
-{
-	struct big t;
-
-	big_mul(z, ux, cross ? vy : vx);
-	big_mul(&t, uy, cross ? vx : vy);
-	big_addsub(z, z, &t, cross ? -1 : 1);
-}
-
-/* The sign of cross(b - a, d - c): which way the direction c->d turns. */
-int
-crossdir(struct point a, struct point b, struct point c, struct point d)
-{
-	struct interval w = iv_sub(iv_mul(iv_diff(b.x, a.x), iv_diff(d.y,
-	    c.y)), iv_mul(iv_diff(b.y, a.y), iv_diff(d.x, c.x)));
-	struct big ux, uy, vx, vy, z;
-	int s;
-
-	if ((s = iv_sign(w)) != 0)
-		return s;
-	big_diff(&ux, b.x, a.x);
-	big_diff(&uy, b.y, a.y);
-	big_diff(&vx, d.x, c.x);
-	big_diff(&vy, d.y, c.y);
-	big_dot(&z, &ux, &uy, &vx, &vy, 1);
-	return big_sign(&z);
-}
-
-/*
- * The sign of (C - p) . (q - p): whether the foot of the centre on the
- * line p->q lies ahead of p.  Times 2D: 2D (A - p) . d + U . d, d = q - p.
- */
-int
-arc_dotcentre(const struct arc *a, struct point p, struct point q)
-{
-	struct interval dx = iv_diff(q.x, p.x), dy = iv_diff(q.y, p.y);
-	struct interval w = iv_add(iv_scale(iv_mul(a->id, iv_add(iv_mul(
-	    iv_diff(a->a.x, p.x), dx), iv_mul(iv_diff(a->a.y, p.y), dy))), 2),
-	    iv_add(iv_mul(a->iux, dx), iv_mul(a->iuy, dy)));
-	struct bigarc z;
-	struct big ex, ey, bdx, bdy, t, u;
-	int s;
-
-	if ((s = iv_sign(w)) != 0)
-		return s * a->sd;
-	bigarc(a, &z);
-	big_diff(&ex, a->a.x, p.x);
-	big_diff(&ey, a->a.y, p.y);
-	big_diff(&bdx, q.x, p.x);
-	big_diff(&bdy, q.y, p.y);
-	big_dot(&t, &ex, &ey, &bdx, &bdy, 0);
-	big_mul(&t, &t, &z.d);
-	big_addsub(&t, &t, &t, 1);
-	big_dot(&u, &z.ux, &z.uy, &bdx, &bdy, 0);
-	big_addsub(&t, &t, &u, 1);
-	return big_sign(&t) * a->sd;
-}
-
-/*
- * The sign of (C - X) . d, d = q - p, X where the line p->q meets the
- * chord's line, the two not parallel.  With o0 = cross(B - A, p - A) and
- * k = -cross(B - A, d), X = p + (o0 / k) d, and times 2D k:
- * (2D (A - p) . d + U . d) k - 2D o0 |d|^2.
- */
-int
-arc_dotcentrecut(const struct arc *a, struct point p, struct point q)
-{
-	struct interval dx = iv_diff(q.x, p.x), dy = iv_diff(q.y, p.y);
-	struct interval ex = iv_diff(a->a.x, p.x), ey = iv_diff(a->a.y, p.y);
-	struct interval e, k, o0, w, zero = { 0, 0 };
-	struct bigarc z;
-	struct big bex, bey, bdx, bdy, bk, bo, t, u;
-	int s;
-
-	e = iv_add(iv_scale(iv_mul(a->id, iv_add(iv_mul(ex, dx),
-	    iv_mul(ey, dy))), 2), iv_add(iv_mul(a->iux, dx),
-	    iv_mul(a->iuy, dy)));
-	k = iv_sub(iv_mul(a->iby, dx), iv_mul(a->ibx, dy));
-	o0 = iv_sub(zero, iv_sub(iv_mul(a->ibx, ey), iv_mul(a->iby, ex)));
-	w = iv_sub(iv_mul(e, k), iv_scale(iv_mul(iv_mul(a->id, o0),
-	    iv_add(iv_mul(dx, dx), iv_mul(dy, dy))), 2));
-	if ((s = iv_sign(w)) != 0 && iv_sign(k) != 0)
-		return s * iv_sign(k) * a->sd;
-	bigarc(a, &z);
-	big_diff(&bex, a->a.x, p.x);
-	big_diff(&bey, a->a.y, p.y);
-	big_diff(&bdx, q.x, p.x);
-	big_diff(&bdy, q.y, p.y);
-	big_dot(&t, &bex, &bey, &bdx, &bdy, 0);
-	big_mul(&t, &t, &z.d);
-	big_addsub(&t, &t, &t, 1);
-	big_dot(&u, &z.ux, &z.uy, &bdx, &bdy, 0);
-	big_addsub(&t, &t, &u, 1);		/* e */
-	big_dot(&bk, &z.by, &z.bx, &bdy, &bdx, 1);	/* by dx - bx dy */
-	big_mul(&t, &t, &bk);
-	big_dot(&bo, &z.bx, &z.by, &bex, &bey, 1);	/* -o0 */
-	big_mul(&bo, &bo, &z.d);
-	big_dot(&u, &bdx, &bdy, &bdx, &bdy, 0);
-	big_mul(&bo, &bo, &u);
-	big_addsub(&t, &t, &bo, 1);
-	big_addsub(&t, &t, &bo, 1);
-	return big_sign(&t) * big_sign(&bk) * a->sd;
-}
-
-/*
- * The sign of dist(C, line p->q)^2 - r^2: whether the line misses the
- * circle (1), touches it (0) or cuts it (-1).  Times 4 D^2 |d|^2:
- * (2D cross(d, A - p) + cross(d, U))^2 - |U|^2 |d|^2.
- */
-int
-arc_linepower(const struct arc *a, struct point p, struct point q)
-{
-	struct interval dx = iv_diff(q.x, p.x), dy = iv_diff(q.y, p.y);
-	struct interval ex = iv_diff(a->a.x, p.x), ey = iv_diff(a->a.y, p.y);
-	struct interval c, w;
-	struct bigarc z;
-	struct big bex, bey, bdx, bdy, t, u;
-	int s;
-
-	c = iv_add(iv_scale(iv_mul(a->id, iv_sub(iv_mul(dx, ey), iv_mul(dy,
-	    ex))), 2), iv_sub(iv_mul(dx, a->iuy), iv_mul(dy, a->iux)));
-	w = iv_sub(iv_mul(c, c), iv_mul(iv_add(iv_mul(a->iux, a->iux),
-	    iv_mul(a->iuy, a->iuy)), iv_add(iv_mul(dx, dx), iv_mul(dy, dy))));
-	if ((s = iv_sign(w)) != 0)
-		return s;
-	bigarc(a, &z);
-	big_diff(&bex, a->a.x, p.x);
-	big_diff(&bey, a->a.y, p.y);
-	big_diff(&bdx, q.x, p.x);
-	big_diff(&bdy, q.y, p.y);
-	big_dot(&t, &bdx, &bdy, &bex, &bey, 1);
-	big_mul(&t, &t, &z.d);
-	big_addsub(&t, &t, &t, 1);
-	big_dot(&u, &bdx, &bdy, &z.ux, &z.uy, 1);
-	big_addsub(&t, &t, &u, 1);
-	big_mul(&t, &t, &t);
-	big_dot(&u, &z.ux, &z.uy, &z.ux, &z.uy, 0);
-	big_dot(&bex, &bdx, &bdy, &bdx, &bdy, 0);
-	big_mul(&u, &u, &bex);
-	big_addsub(&t, &t, &u, -1);
-	return big_sign(&t);
-}
-
-/*
- * The sign of cross(v - C2, v - C1), C1 and C2 the centres of a1 and a2:
- * 0 when the circles through v are tangent there.  Times 4 D1 D2:
- * cross(2 D2 (v - A2) - U2, 2 D1 (v - A1) - U1).
- */
-int
-arc_tangentcross(const struct arc *a1, const struct arc *a2, struct point v)
-{
-	struct interval w1x, w1y, w2x, w2y, w;
-	struct bigarc z1, z2;
-	struct big p1x, p1y, p2x, p2y, t;
-	int s;
-
-	w1x = iv_sub(iv_scale(iv_mul(a1->id, iv_diff(v.x, a1->a.x)), 2),
-	    a1->iux);
-	w1y = iv_sub(iv_scale(iv_mul(a1->id, iv_diff(v.y, a1->a.y)), 2),
-	    a1->iuy);
-	w2x = iv_sub(iv_scale(iv_mul(a2->id, iv_diff(v.x, a2->a.x)), 2),
-	    a2->iux);
-	w2y = iv_sub(iv_scale(iv_mul(a2->id, iv_diff(v.y, a2->a.y)), 2),
-	    a2->iuy);
-	w = iv_sub(iv_mul(w2x, w1y), iv_mul(w2y, w1x));
-	if ((s = iv_sign(w)) != 0)
-		return s * a1->sd * a2->sd;
-	bigarc(a1, &z1);
-	bigarc(a2, &z2);
-	big_diff(&p1x, v.x, a1->a.x);
-	big_mul(&p1x, &p1x, &z1.d);
-	big_addsub(&p1x, &p1x, &p1x, 1);
-	big_addsub(&p1x, &p1x, &z1.ux, -1);
-	big_diff(&p1y, v.y, a1->a.y);
-	big_mul(&p1y, &p1y, &z1.d);
-	big_addsub(&p1y, &p1y, &p1y, 1);
-	big_addsub(&p1y, &p1y, &z1.uy, -1);
-	big_diff(&p2x, v.x, a2->a.x);
-	big_mul(&p2x, &p2x, &z2.d);
-	big_addsub(&p2x, &p2x, &p2x, 1);
-	big_addsub(&p2x, &p2x, &z2.ux, -1);
-	big_diff(&p2y, v.y, a2->a.y);
-	big_mul(&p2y, &p2y, &z2.d);
-	big_addsub(&p2y, &p2y, &p2y, 1);
-	big_addsub(&p2y, &p2y, &z2.uy, -1);
-	big_dot(&t, &p2x, &p2y, &p1x, &p1y, 1);
-	return big_sign(&t) * a1->sd * a2->sd;
-}
-
-/*
- * The sign of f at p + e (t - p), e > 0 infinitesimal, t != p: f(p), or
- * when p is on the circle the sign of 2 (p - C) . (t - p), or when that is
- * 0 too (t - p along the tangent) that of |t - p|^2.
- */
-int
-arc_powertoward(const struct arc *a, struct point p, struct point t)
-{
-	int s;
-
-	if ((s = arc_power(a, p.x, p.y)) != 0)
-		return s;
-	if ((s = arc_dotcentre(a, p, t)) != 0)
-		return -s;
-	return 1;
-}
-
-/*
- * Where the roots t1 <= t2 of a quadratic g along a line lie against a
- * point s of the line, r[j] < 0 before it, 0 at it, > 0 past it, from the
- * sign gs of g at s and the sign ts of the middle of the roots past s.
- */
-void
-arc_rootsat(int gs, int ts, int r[2])
-{
-	if (gs < 0)
-		r[0] = -1, r[1] = 1;
-	else if (gs == 0)
-		r[0] = ts > 0 ? 0 : ts < 0 ? -1 : 0,
-		r[1] = ts > 0 ? 1 : 0;
-	else
-		r[0] = r[1] = ts;
-}
-
-static void
-big_neg(struct big *z)
-{
-	if (z->n > 0)
-		z->neg = !z->neg;
-}
-
-/*
- * The common points of the circles of a1 and a2, two circles that differ:
- * how many (0, 1 where they are tangent, 2), and for each, in the order
- * right of the line from C1 to C2, then left, side[i][j] the sign of
- * orient2d(A, B, X) times the side of M, A, M and B arc j's points: 1
- * inside arc j, 0 at an end, -1 off it.
- *
- * Positions are taken from A1.  Times D_i, circle i's power is P_i(x) =
- * D_i |x - A_i|^2 - (x - A_i) . U_i, and the common points lie on the
- * radical line L(x) = D2 P1(x) - D1 P2(x) = n . x - k, n = 2 D1 D2 e +
- * D1 U2 - D2 U1 (= 2 D1 D2 (C2 - C1)), k = D1 P2(A1), e = A2 - A1.  The
- * line cuts circle 1 as its distance from C1, |g| / 2 |D1| |n| with g =
- * 2 D1 k - n . U1, is below r1 = |U1| / 2 |D1|: the sign of |U1|^2 |n|^2 -
- * g^2 tells 0, 1 or 2 points.  Each chord line AB of arc j not parallel to
- * the radical line meets it at Y = A + tau (B - A), tau = -L(A) / n . b;
- * the power there is tau (tau - 1) |b|^2, so the sign of the other
- * circle's power at A times that at B, and the points lie against Y as
- * the foot F of the centres does when Y is outside: along rot90(n), (F -
- * Y) . rot90(n) = cross(n, C - Y), times 2 D n . b,
- *
- *	cross(n, U) (n . b) + 2 D L(A) cross(n, b),
- *
- * and orient2d(A, B, X) is the sign of X past Y times n . b.  A chord
- * parallel to the radical line has both points on the side cross(n, b)
- * L(A) says.  Degree 16 at most, in the differences of the input.
- */
-int
-arc_circlesmeet(const struct arc *a1, const struct arc *a2, int side[2][2])
-{
-	const struct point *p[6] = { &a1->a, &a1->m, &a1->b, &a2->a, &a2->m,
-	    &a2->b };
-	struct bigarc z[2];
-	struct big ex, ey, e2, k, nx, ny, g, la[2], t, u;
-	int i, j, nroots, s, low = INT_MAX;
-
-	/*
-	 * Every sign below is of a homogeneous polynomial in differences of
-	 * coordinates, all multiples of 2^low: divided by it, the integers
-	 * are as short as the input's spread of digits, not BIGSHIFT longer.
-	 */
-	for (i = 0; i < 6; i++) {
-		if (p[i]->x != 0 && lowbit(p[i]->x) < low)
-			low = lowbit(p[i]->x);
-		if (p[i]->y != 0 && lowbit(p[i]->y) < low)
-			low = lowbit(p[i]->y);
-	}
-	low = low == INT_MAX ? 0 : low + BIGSHIFT;
-	bigarcshift(a1, &z[0], low);
-	bigarcshift(a2, &z[1], low);
-	big_diff(&ex, a2->a.x, a1->a.x);
-	big_diff(&ey, a2->a.y, a1->a.y);
-	big_shr(&ex, low);
-	big_shr(&ey, low);
-	big_dot(&e2, &ex, &ey, &ex, &ey, 0);
-	/* L(A1) = -D1 P2(A1) = -k, L(A2) = D2 P1(A2) */
-	big_mul(&k, &z[1].d, &e2);
-	big_dot(&t, &ex, &ey, &z[1].ux, &z[1].uy, 0);
-	big_addsub(&k, &k, &t, 1);
-	big_mul(&k, &k, &z[0].d);
-	la[0] = k;
-	big_neg(&la[0]);
-	big_mul(&la[1], &z[0].d, &e2);
-	big_dot(&t, &ex, &ey, &z[0].ux, &z[0].uy, 0);
-	big_addsub(&la[1], &la[1], &t, -1);
-	big_mul(&la[1], &la[1], &z[1].d);
-	big_mul(&g, &z[0].d, &z[1].d);
-	big_addsub(&g, &g, &g, 1);
-	big_mul(&nx, &g, &ex);
-	big_mul(&ny, &g, &ey);
-	big_mul(&t, &z[0].d, &z[1].ux);
-	big_addsub(&nx, &nx, &t, 1);
-	big_mul(&t, &z[1].d, &z[0].ux);
-	big_addsub(&nx, &nx, &t, -1);
-	big_mul(&t, &z[0].d, &z[1].uy);
-	big_addsub(&ny, &ny, &t, 1);
-	big_mul(&t, &z[1].d, &z[0].uy);
-	big_addsub(&ny, &ny, &t, -1);
-	if (big_sign(&nx) == 0 && big_sign(&ny) == 0)
-		return 0;	/* one centre, two radii */
-	big_mul(&g, &z[0].d, &k);
-	big_addsub(&g, &g, &g, 1);
-	big_dot(&t, &nx, &ny, &z[0].ux, &z[0].uy, 0);
-	big_addsub(&g, &g, &t, -1);
-	big_dot(&t, &z[0].ux, &z[0].uy, &z[0].ux, &z[0].uy, 0);
-	big_dot(&u, &nx, &ny, &nx, &ny, 0);
-	big_mul(&t, &t, &u);
-	big_mul(&u, &g, &g);
-	big_addsub(&t, &t, &u, -1);
-	if ((s = big_sign(&t)) < 0)
-		return 0;
-	nroots = s > 0 ? 2 : 1;
-	for (j = 0; j < 2; j++) {
-		const struct arc *a = j ? a2 : a1, *o = j ? a1 : a2;
-		struct big c, nb, w;
-		int kd, gs, ts = 0, r[2];
-
-		big_dot(&nb, &nx, &ny, &z[j].bx, &z[j].by, 0);
-		big_dot(&c, &nx, &ny, &z[j].bx, &z[j].by, 1);
-		if ((kd = big_sign(&nb)) == 0) {
-			s = big_sign(&c) * big_sign(&la[j]) * a->sd;
-			side[0][j] = side[1][j] = s;
-			continue;
-		}
-		gs = arc_power(o, a->a.x, a->a.y) * arc_power(o, a->b.x,
-		    a->b.y);
-		if (gs >= 0) {
-			big_dot(&w, &nx, &ny, &z[j].ux, &z[j].uy, 1);
-			big_mul(&w, &w, &nb);
-			big_mul(&t, &z[j].d, &la[j]);
-			big_addsub(&t, &t, &t, 1);
-			big_mul(&t, &t, &c);
-			big_addsub(&w, &w, &t, 1);
-			ts = big_sign(&w) * a->sd * kd;
-		}
-		arc_rootsat(gs, ts, r);
-		for (i = 0; i < 2; i++)
-			side[i][j] = r[i] * kd * a->sd;
-	}
-	/* the roots run along rot90(n), the sign of D1 D2 times C1 -> C2's */
-	if (a1->sd * a2->sd < 0)
-		for (j = 0; j < 2; j++) {
-			s = side[0][j];
-			side[0][j] = side[1][j];
-			side[1][j] = s;
-		}
-	return nroots;
 }

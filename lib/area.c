@@ -15,28 +15,28 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "num.h"
 
 /* The sign of the area of loop v[0..n), exactly: > 0 counter-clockwise. */
 int
-loop_sign(const struct point *v, size_t n)
+area_loopsign(const struct point *v, size_t n)
 {
 	struct xsum a2;
 	size_t i;
 	int sign;
 
-	xs_init(&a2);
+	area_init(&a2);
 	for (i = 0; i < n; i++) {
-		xs_addprod(&a2, v[i].x, v[(i + 1) % n].y);
-		xs_addprod(&a2, -v[(i + 1) % n].x, v[i].y);
+		area_addprod(&a2, v[i].x, v[(i + 1) % n].y);
+		area_addprod(&a2, -v[(i + 1) % n].x, v[i].y);
 	}
-	sign = xs_sign(&a2);
-	xs_free(&a2);
+	sign = area_sign(&a2);
+	area_free(&a2);
 	return sign;
 }
 
 void
-xs_init(struct xsum *s)
+area_init(struct xsum *s)
 {
 	s->h = NULL;
 	s->n = s->cap = 0;
@@ -44,14 +44,14 @@ xs_init(struct xsum *s)
 }
 
 void
-xs_free(struct xsum *s)
+area_free(struct xsum *s)
 {
 	free(s->h);
-	xs_init(s);
+	area_init(s);
 }
 
 static void
-xs_zero(struct xsum *s)
+area_zero(struct xsum *s)
 {
 	s->n = 0;
 }
@@ -95,7 +95,7 @@ compress(struct xsum *s)
 
 /* Adds b exactly; zero components are dropped. */
 void
-xs_add(struct xsum *s, double b)
+area_add(struct xsum *s, double b)
 {
 	double q = b, low;
 	int i, k = 0;
@@ -122,38 +122,38 @@ xs_add(struct xsum *s, double b)
 
 /* Adds a * b exactly. */
 void
-xs_addprod(struct xsum *s, double a, double b)
+area_addprod(struct xsum *s, double a, double b)
 {
 	double p, e;
 
 	two_product(a, b, &p, &e);
-	xs_add(s, e);
-	xs_add(s, p);
+	area_add(s, e);
+	area_add(s, p);
 }
 
 /* Adds a * b * c exactly. */
 void
-xs_addprod3(struct xsum *s, double a, double b, double c)
+area_addprod3(struct xsum *s, double a, double b, double c)
 {
 	double p, e;
 
 	two_product(a, b, &p, &e);
-	xs_addprod(s, e, c);
-	xs_addprod(s, p, c);
+	area_addprod(s, e, c);
+	area_addprod(s, p, c);
 }
 
 /* Adds t * scale, scale a power of two, so that every product is exact. */
 void
-xs_addxs(struct xsum *s, const struct xsum *t, double scale)
+area_addsum(struct xsum *s, const struct xsum *t, double scale)
 {
 	int i;
 
 	for (i = 0; i < t->n; i++)
-		xs_add(s, t->h[i] * scale);
+		area_add(s, t->h[i] * scale);
 }
 
 int
-xs_sign(const struct xsum *s)
+area_sign(const struct xsum *s)
 {
 	double top;
 
@@ -179,7 +179,7 @@ oddmantissa(double v)
  * the answer converges in a step or two.
  */
 double
-xs_round(const struct xsum *s)
+area_round(const struct xsum *s)
 {
 	struct xsum r;
 	double a = 0, next, half;
@@ -187,17 +187,17 @@ xs_round(const struct xsum *s)
 
 	for (i = 0; i < s->n; i++)
 		a += s->h[i];
-	xs_init(&r);
+	area_init(&r);
 	for (;;) {
-		xs_zero(&r);
-		xs_addxs(&r, s, 1);
-		xs_add(&r, -a);
-		if ((sr = xs_sign(&r)) == 0)
+		area_zero(&r);
+		area_addsum(&r, s, 1);
+		area_add(&r, -a);
+		if ((sr = area_sign(&r)) == 0)
 			break;
 		next = nextafter(a, sr > 0 ? HUGE_VAL : -HUGE_VAL);
 		half = (next - a) / 2;
-		xs_add(&r, -half);
-		cmp = xs_sign(&r) * sr;
+		area_add(&r, -half);
+		cmp = area_sign(&r) * sr;
 		if (cmp < 0)
 			break;
 		if (cmp == 0) {
@@ -207,24 +207,24 @@ xs_round(const struct xsum *s)
 		}
 		a = next;
 	}
-	xs_free(&r);
+	area_free(&r);
 	return a;
 }
 
 void
-mo_init(struct moments *m)
+area_moinit(struct moments *m)
 {
-	xs_init(&m->a2);
-	xs_init(&m->mx);
-	xs_init(&m->my);
+	area_init(&m->a2);
+	area_init(&m->mx);
+	area_init(&m->my);
 }
 
 void
-mo_zero(struct moments *m)
+area_mozero(struct moments *m)
 {
-	xs_zero(&m->a2);
-	xs_zero(&m->mx);
-	xs_zero(&m->my);
+	area_zero(&m->a2);
+	area_zero(&m->mx);
+	area_zero(&m->my);
 }
 
 /*
@@ -233,7 +233,7 @@ mo_zero(struct moments *m)
  * totals over a ring are 6 times its first moments.
  */
 void
-mo_edge(struct moments *m, struct point a, struct point b)
+area_moedge(struct moments *m, struct point a, struct point b)
 {
 	double c[4], sx[2], sy[2];
 	int i, j;
@@ -245,23 +245,23 @@ mo_edge(struct moments *m, struct point a, struct point b)
 	for (i = 0; i < 4; i++) {
 		if (c[i] == 0)
 			continue;
-		xs_add(&m->a2, c[i]);
+		area_add(&m->a2, c[i]);
 		for (j = 0; j < 2; j++) {
 			if (sx[j] != 0)
-				xs_addprod(&m->mx, sx[j], c[i]);
+				area_addprod(&m->mx, sx[j], c[i]);
 			if (sy[j] != 0)
-				xs_addprod(&m->my, sy[j], c[i]);
+				area_addprod(&m->my, sy[j], c[i]);
 		}
 	}
 }
 
 /* Adds sign * t to m, sign 1 or -1. */
 void
-mo_addmo(struct moments *m, const struct moments *t, int sign)
+area_moadd(struct moments *m, const struct moments *t, int sign)
 {
-	xs_addxs(&m->a2, &t->a2, sign);
-	xs_addxs(&m->mx, &t->mx, sign);
-	xs_addxs(&m->my, &t->my, sign);
+	area_addsum(&m->a2, &t->a2, sign);
+	area_addsum(&m->mx, &t->mx, sign);
+	area_addsum(&m->my, &t->my, sign);
 }
 
 /*
@@ -269,14 +269,14 @@ mo_addmo(struct moments *m, const struct moments *t, int sign)
  * exactly rounded moments, so it is within a few units in the last place.
  */
 void
-mo_result(const struct moments *m, double *area, double *cx, double *cy)
+area_moresult(const struct moments *m, double *area, double *cx, double *cy)
 {
-	double a2 = xs_round(&m->a2);
+	double a2 = area_round(&m->a2);
 
 	*area = a2 / 2;
 	if (a2 != 0) {
-		*cx = xs_round(&m->mx) / (3 * a2);
-		*cy = xs_round(&m->my) / (3 * a2);
+		*cx = area_round(&m->mx) / (3 * a2);
+		*cy = area_round(&m->my) / (3 * a2);
 	} else
 		*cx = *cy = 0;
 }

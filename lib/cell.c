@@ -6,11 +6,10 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
 
 /* Cell corners as qtree(5) defines them: x0 + i * h in double arithmetic. */
 double
-cellcoord(double x0, double size, int level, uint64_t i)
+cell_coord(double x0, double size, int level, uint64_t i)
 {
 	double h = ldexp(size, -level);
 
@@ -19,7 +18,7 @@ cellcoord(double x0, double size, int level, uint64_t i)
 
 /*
  * The range rule of qtree(5), axis by axis.  A universe's corners on one
- * axis are a0 and a0 + size, both zero or of a magnitude coordok takes.
+ * axis are a0 and a0 + size, both zero or of a magnitude parsecoordok takes.
  * At level L, h = size / 2^L and corner i is c(i) = fl(a0 + fl(i h)),
  * which never decreases with i (each rounding is monotone).  The level is
  * within reach when three things hold:
@@ -57,13 +56,13 @@ firstnonneg(double a0, double size, int level, int strict)
 	uint64_t lo = 0, hi = (uint64_t)1 << level, mid;
 
 	/* c(lo) is below, c(hi) not: c(2^level) >= 0 when called */
-	if (strict && !(cellcoord(a0, size, level, hi) > 0))
+	if (strict && !(cell_coord(a0, size, level, hi) > 0))
 		return hi + 1;
 	while (hi - lo > 1) {
 		double c;
 
 		mid = lo + (hi - lo) / 2;
-		c = cellcoord(a0, size, level, mid);
+		c = cell_coord(a0, size, level, mid);
 		if (strict ? c > 0 : c >= 0)
 			hi = mid;
 		else
@@ -90,17 +89,17 @@ axisbreaks(double a0, double size, int level)
 		return "cells would be smaller than 1e-100";
 	if (a0 < 0 && far >= 0) {
 		i = firstnonneg(a0, size, level, 0);
-		if (-cellcoord(a0, size, level, i - 1) < QT_COORD_MIN)
+		if (-cell_coord(a0, size, level, i - 1) < QT_COORD_MIN)
 			return "a cell corner would lie nearer 0 than 1e-100";
 		i = firstnonneg(a0, size, level, 1);
-		if (i <= n && cellcoord(a0, size, level, i) < QT_COORD_MIN)
+		if (i <= n && cell_coord(a0, size, level, i) < QT_COORD_MIN)
 			return "a cell corner would lie nearer 0 than 1e-100";
 	}
 	return NULL;
 }
 
 int
-univdeepest(const struct universe *u, char *why, size_t n)
+cell_univdeepest(const struct universe *u, char *why, size_t n)
 {
 	static const char *const name[] = { "x0", "y0", "size", "x0 + size",
 	    "y0 + size" };
@@ -115,7 +114,7 @@ univdeepest(const struct universe *u, char *why, size_t n)
 	v[3] = u->x0 + u->size;
 	v[4] = u->y0 + u->size;
 	for (i = 0; i < 5; i++)
-		if (!coordok(v[i]) || (i == 2 && v[i] <= 0)) {
+		if (!parsecoordok(v[i]) || (i == 2 && v[i] <= 0)) {
 			if (why != NULL) {
 				fmtreal(buf, v[i]);
 				snprintf(why, n, "its %s, %s, %s", name[i], buf,
@@ -136,11 +135,11 @@ univdeepest(const struct universe *u, char *why, size_t n)
 }
 
 const char *
-univcheck(const struct universe *u, int level)
+cell_univcheck(const struct universe *u, int level)
 {
 	static char msg[512];
 	char why[128], x0[32], y0[32], size[32];
-	int deepest = univdeepest(u, why, sizeof(why));
+	int deepest = cell_univdeepest(u, why, sizeof(why));
 
 	if (deepest >= 0 && level <= deepest)
 		return NULL;
@@ -159,7 +158,7 @@ univcheck(const struct universe *u, int level)
 
 /* Column and row of a path; -1 when the path is malformed for its level. */
 int
-pathcell(const char *path, int level, uint64_t *ix, uint64_t *iy)
+cell_frompath(const char *path, int level, uint64_t *ix, uint64_t *iy)
 {
 	int i;
 
@@ -204,7 +203,7 @@ firstdiff(uint64_t x, uint64_t y)
  * two, so they are compared eight bytes at a time, the last eight too.
  */
 int
-pathprefix(const char *a, int na, const char *b, int nb)
+cell_pathprefix(const char *a, int na, const char *b, int nb)
 {
 	int k = 0, n = na < nb ? na : nb;
 	uint64_t x, y;
@@ -228,10 +227,10 @@ pathprefix(const char *a, int na, const char *b, int nb)
 
 /*
  * The leaf classes a -c option names, a word of F, E and P in any order,
- * as a set of CLASSBIT bits; a bad word is a usage error.
+ * as a set of CELL_CLASSBIT bits; a bad word is a usage error.
  */
 unsigned
-optclasses(const char *arg)
+cell_optclasses(const char *arg)
 {
 	const char *p;
 	unsigned set = 0;
@@ -239,9 +238,9 @@ optclasses(const char *arg)
 	if (*arg == '\0')
 		die(2, "-c: no classes given (a word of F, E and P)");
 	for (p = arg; *p != '\0'; p++) {
-		if (CLASSBIT(*p) == 0)
+		if (CELL_CLASSBIT(*p) == 0)
 			die(2, "-c: unknown class %c (F, E or P)", *p);
-		set |= CLASSBIT(*p);
+		set |= CELL_CLASSBIT(*p);
 	}
 	return set;
 }
@@ -254,7 +253,7 @@ optclasses(const char *arg)
  * the level of their deepest common ancestor.
  */
 int
-cellcmp(const struct cell *a, const struct cell *b)
+cell_cmp(const struct cell *a, const struct cell *b)
 {
 	int l = a->level < b->level ? a->level : b->level;
 	uint64_t ax = a->ix >> (a->level - l), ay = a->iy >> (a->level - l);
@@ -267,82 +266,4 @@ cellcmp(const struct cell *a, const struct cell *b)
 	if (dy < dx && dy < (dx ^ dy))
 		return ax < bx ? -1 : 1;
 	return ay < by ? -1 : 1;
-}
-
-static struct celltext *celltexts;	/* the caches in use */
-
-static const struct levelcoords nocoords;	/* every key 0: empty */
-
-/* The cache of universe u's texts, shared with its other users. */
-struct celltext *
-celltext_open(const struct universe *u)
-{
-	struct celltext *t;
-	size_t i;
-
-	/* bit for bit, three doubles: 0 and -0 are printed differently */
-	for (t = celltexts; t != NULL; t = t->next)
-		if (memcmp(&t->u, u, sizeof(*u)) == 0) {
-			t->users++;
-			return t;
-		}
-	t = xcalloc(1, sizeof(*t));
-	t->next = celltexts;
-	celltexts = t;
-	t->users = 1;
-	t->u = *u;
-	for (i = 0; i <= QT_MAXLEVEL; i++) {
-		t->size[i] = ldexp(u->size, -(int)i);
-		t->coord[i] = (struct levelcoords *)&nocoords;
-	}
-	return t;
-}
-
-void
-celltext_close(struct celltext *t)
-{
-	struct celltext **p;
-	size_t i;
-
-	if (t == NULL || --t->users > 0)
-		return;
-	for (p = &celltexts; *p != t; p = &(*p)->next)
-		;
-	*p = t->next;
-	for (i = 0; i <= QT_MAXLEVEL; i++)
-		if (t->coord[i] != &nocoords)
-			free(t->coord[i]);
-	free(t);
-}
-
-const struct coordtext *
-celltext_miss(struct celltext *t, int level, int axis, uint64_t i)
-{
-	struct coordtext *k;
-	const struct coordtext *up, *prev;
-
-	if (axis < 2 && t->coord[level] == &nocoords)
-		t->coord[level] = xcalloc(1, sizeof(*t->coord[level]));
-	k = axis == 2 ? &t->sizetext[level] :
-	    &t->coord[level]->c[axis][i % NCOORD];
-	k->key = i + 1;
-	k->v = axis == 2 ? t->size[level] :
-	    (axis ? t->u.y0 : t->u.x0) + (double)i * t->size[level];
-	/* column 2j at this level is column j a level up, bit for bit */
-	up = level > 0 && axis < 2 && !(i & 1) ?
-	    &t->coord[level - 1]->c[axis][(i >> 1) % NCOORD] : NULL;
-	if (up != NULL && up->key == (i >> 1) + 1) {
-		memcpy(k->text, up->text, sizeof(k->text));
-		k->len = up->len;
-	} else
-		k->len = fmtreal(k->text, k->v) - k->text;
-	/* 2j + 1 is 2j, whose last digit is even, with that digit plus one */
-	prev = i & 1 ? &t->coord[level]->c[axis][(i - 1) % NCOORD] : NULL;
-	if (prev != NULL && prev->key == i) {
-		memcpy(k->itext, prev->itext, sizeof(k->itext));
-		k->ilen = prev->ilen;
-		k->itext[k->ilen - 1]++;
-	} else
-		k->ilen = fmtint(k->itext, (long long)i) - k->itext;
-	return k;
 }

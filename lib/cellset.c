@@ -147,7 +147,7 @@ cellset_above(const struct cellset *s, int level, uint64_t ix, uint64_t iy)
  * dx and dy are -1, 0 or 1.  Returns 0 when it lies outside the universe.
  */
 int
-cellnext(int level, uint64_t ix, uint64_t iy, int dx, int dy, uint64_t *nx,
+cellset_next(int level, uint64_t ix, uint64_t iy, int dx, int dy, uint64_t *nx,
     uint64_t *ny)
 {
 	uint64_t last = (UINT64_C(1) << level) - 1;

@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "inline.h"
 
 struct live {
 	uint64_t	x, y;
@@ -37,7 +37,7 @@ struct corners {
 
 /*
  * Is (ax, ay) before (bx, by) in Z order, y the higher bit of a digit?
- * cellcmp at one level, written out, and without branches: it runs for
+ * cell_cmp at one level, written out, and without branches: it runs for
  * every live point at every rebuild, on points in no order.
  */
 static int
@@ -115,12 +115,12 @@ rebuild(struct corners *t)
 }
 
 /*
- * keeppoints: whether corners_point will be asked, which costs 16 bytes a
+ * keeppoints: whether corner_point will be asked, which costs 16 bytes a
  * vertex; a program that writes each vertex when it is numbered needs
  * only the live points.
  */
 struct corners *
-corners_new(int keeppoints)
+corner_new(int keeppoints)
 {
 	struct corners *t = xmalloc(sizeof(*t));
 
@@ -131,7 +131,7 @@ corners_new(int keeppoints)
 }
 
 void
-corners_free(struct corners *t)
+corner_free(struct corners *t)
 {
 	if (t != NULL) {
 		free(t->live);
@@ -143,7 +143,7 @@ corners_free(struct corners *t)
 
 /* The cell being meshed now starts at grid point (x, y). */
 void
-corners_at(struct corners *t, uint64_t x, uint64_t y)
+corner_at(struct corners *t, uint64_t x, uint64_t y)
 {
 	t->atx = x;
 	t->aty = y;
@@ -197,7 +197,7 @@ lookup(const struct corners *t, uint64_t x, uint64_t y)
  * cell asks for again.
  */
 uint32_t
-corners_id(struct corners *t, uint64_t x, uint64_t y)
+corner_id(struct corners *t, uint64_t x, uint64_t y)
 {
 	size_t k = lookup(t, x, y);
 
@@ -207,7 +207,7 @@ corners_id(struct corners *t, uint64_t x, uint64_t y)
 
 /* The number of the vertex at (x, y) if it has one and is live, else 0. */
 uint32_t
-corners_find(const struct corners *t, uint64_t x, uint64_t y)
+corner_find(const struct corners *t, uint64_t x, uint64_t y)
 {
 	size_t k = lookup(t, x, y);
 
@@ -215,14 +215,14 @@ corners_find(const struct corners *t, uint64_t x, uint64_t y)
 }
 
 size_t
-corners_count(const struct corners *t)
+corner_count(const struct corners *t)
 {
 	return t->npt;
 }
 
 /* The grid point of vertex id, from 1. */
 void
-corners_point(const struct corners *t, uint32_t id, uint64_t *x,
+corner_point(const struct corners *t, uint32_t id, uint64_t *x,
     uint64_t *y)
 {
 	*x = t->pt[id - 1][0];

@@ -34,7 +34,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "num.h"
 
 /* Sides of the cell, as walked from its lower left corner. */
 enum { BOTTOM, RIGHT, TOP, LEFT, NONE };
@@ -86,11 +86,11 @@ cut_new(const struct universe *u)
 	ct->depth = -1;
 	ct->rstart = xmalloc(sizeof(*ct->rstart));
 	ct->rstart[0] = 0;
-	xs_init(&ct->s);
-	xs_init(&ct->k);
-	xs_init(&ct->n0);
-	xs_init(&ct->nx);
-	xs_init(&ct->ny);
+	area_init(&ct->s);
+	area_init(&ct->k);
+	area_init(&ct->n0);
+	area_init(&ct->nx);
+	area_init(&ct->ny);
 	return ct;
 }
 
@@ -107,11 +107,11 @@ cut_free(struct cutter *ct)
 	free(ct->lp);
 	free(ct->lr);
 	free(ct->ll);
-	xs_free(&ct->s);
-	xs_free(&ct->k);
-	xs_free(&ct->n0);
-	xs_free(&ct->nx);
-	xs_free(&ct->ny);
+	area_free(&ct->s);
+	area_free(&ct->k);
+	area_free(&ct->n0);
+	area_free(&ct->nx);
+	area_free(&ct->ny);
 	free(ct);
 }
 
@@ -123,15 +123,15 @@ cut_addring(struct cutter *ct, const struct ring *g)
 	size_t i;
 	int flip;
 
-	xs_init(&a2);
+	area_init(&a2);
 	for (i = 0; i < g->n; i++) {
 		struct point a = g->v[i], b = g->v[(i + 1) % g->n];
 
-		xs_addprod(&a2, a.x, b.y);
-		xs_addprod(&a2, -b.x, a.y);
+		area_addprod(&a2, a.x, b.y);
+		area_addprod(&a2, -b.x, a.y);
 	}
-	flip = xs_sign(&a2) == (g->hole ? 1 : -1);
-	xs_free(&a2);
+	flip = area_sign(&a2) == (g->hole ? 1 : -1);
+	area_free(&a2);
 	split_addring(ct->sp, g);
 	ct->flip = xreallocarray(ct->flip, ct->nedges + g->n, 1);
 	memset(ct->flip + ct->nedges, flip, g->n);
@@ -187,7 +187,7 @@ addprod3(struct xsum *s, double sign, const double p[2], const double q[2],
 		for (j = 0; j < 2; j++)
 			for (k = 0; k < 2; k++)
 				if (p[i] != 0 && q[j] != 0 && r[k] != 0)
-					xs_addprod3(s, sign * p[i], q[j], r[k]);
+					area_addprod3(s, sign * p[i], q[j], r[k]);
 }
 
 /* Adds sign t d, d an expansion of two components. */
@@ -199,7 +199,7 @@ addxsprod(struct xsum *s, double sign, const struct xsum *t, const double d[2])
 	for (i = 0; i < t->n; i++)
 		for (k = 0; k < 2; k++)
 			if (d[k] != 0)
-				xs_addprod(s, sign * t->h[i], d[k]);
+				area_addprod(s, sign * t->h[i], d[k]);
 }
 
 static void
@@ -233,10 +233,10 @@ addquot(struct xsum *s, struct xsum *num, const double d[2])
 		q = approx(num) / dv;
 		if (q == 0 || !isfinite(q))
 			break;
-		xs_add(s, q);
-		xs_addprod(num, -q, d[0]);
+		area_add(s, q);
+		area_addprod(num, -q, d[0]);
 		if (d[1] != 0)
-			xs_addprod(num, -q, d[1]);
+			area_addprod(num, -q, d[1]);
 	}
 }
 
@@ -296,9 +296,9 @@ addedge(struct cutter *ct, struct point a, struct point b, const double x[2],
 	for (i = 0; i < 2; i++)
 		for (j = 0; j < 2; j++) {
 			if (ax0[i] != 0 && dy[j] != 0)
-				xs_addprod(&ct->k, ax0[i], dy[j]);
+				area_addprod(&ct->k, ax0[i], dy[j]);
 			if (ay0[i] != 0 && dx[j] != 0)
-				xs_addprod(&ct->k, -ay0[i], dx[j]);
+				area_addprod(&ct->k, -ay0[i], dx[j]);
 		}
 	for (end = 0; end < 2; end++) {
 		/* the piece: K tQ - K tP */
@@ -310,7 +310,7 @@ addedge(struct cutter *ct, struct point a, struct point b, const double x[2],
 			diff(y[side[end] == TOP], a.y, t);
 			addxsprod(&ct->ny, end ? 1 : -1, &ct->k, t);
 		} else if (end == 1)
-			xs_addxs(&ct->n0, &ct->k, 1);
+			area_addsum(&ct->n0, &ct->k, 1);
 	}
 	/* the crossings: entering, the walk leaves R (-1); leaving, enters it */
 	for (end = 0; end < 2; end++) {
@@ -336,7 +336,7 @@ addedge(struct cutter *ct, struct point a, struct point b, const double x[2],
 			break;
 		}
 	}
-	xs_addxs(&ct->s, &ct->n0, 1);
+	area_addsum(&ct->s, &ct->n0, 1);
 	if (ct->nx.n > 0)
 		addquot(&ct->s, &ct->nx, dx);
 	if (ct->ny.n > 0)
@@ -358,21 +358,21 @@ quotient(const struct xsum *s, const double w[2], const double h[2])
 	f = approx(s) / (2 * (w[0] + w[1]) * (h[0] + h[1]));
 	if (f == 0 && s->n == 0)
 		return 0;
-	xs_init(&r);
+	area_init(&r);
 	for (;;) {
 		r.n = 0;
-		xs_addxs(&r, s, 1);
+		area_addsum(&r, s, 1);
 		for (i = 0; i < 2; i++)
 			for (j = 0; j < 2; j++)
-				xs_addprod3(&r, -2 * f, w[i], h[j]);
-		if ((sr = xs_sign(&r)) == 0)
+				area_addprod3(&r, -2 * f, w[i], h[j]);
+		if ((sr = area_sign(&r)) == 0)
 			break;
 		next = nextafter(f, sr > 0 ? HUGE_VAL : -HUGE_VAL);
 		half = (next - f) / 2;
 		for (i = 0; i < 2; i++)
 			for (j = 0; j < 2; j++)
-				xs_addprod3(&r, -2 * half, w[i], h[j]);
-		cmp = xs_sign(&r) * sr;
+				area_addprod3(&r, -2 * half, w[i], h[j]);
+		cmp = area_sign(&r) * sr;
 		if (cmp < 0)
 			break;
 		if (cmp == 0) {
@@ -385,7 +385,7 @@ quotient(const struct xsum *s, const double w[2], const double h[2])
 		}
 		f = next;
 	}
-	xs_free(&r);
+	area_free(&r);
 	return f;
 }
 
@@ -407,10 +407,10 @@ cut_cell(struct cutter *ct, const struct cell *c, double *frac)
 		*frac = ct->inside[level] ? 1 : 0;
 		return split_class(0, ct->inside[level]);
 	}
-	x[0] = cellcoord(ct->u.x0, ct->u.size, level, c->ix);
-	x[1] = cellcoord(ct->u.x0, ct->u.size, level, c->ix + 1);
-	y[0] = cellcoord(ct->u.y0, ct->u.size, level, c->iy);
-	y[1] = cellcoord(ct->u.y0, ct->u.size, level, c->iy + 1);
+	x[0] = cell_coord(ct->u.x0, ct->u.size, level, c->ix);
+	x[1] = cell_coord(ct->u.x0, ct->u.size, level, c->ix + 1);
+	y[0] = cell_coord(ct->u.y0, ct->u.size, level, c->iy);
+	y[1] = cell_coord(ct->u.y0, ct->u.size, level, c->iy + 1);
 	diff(x[1], x[0], w);
 	diff(y[1], y[0], h);
 	ct->s.n = 0;
@@ -437,10 +437,10 @@ cut_addarea(struct xsum *s, const struct universe *u, const struct cell *c,
 {
 	double w[2], h[2];
 
-	diff(cellcoord(u->x0, u->size, c->level, c->ix + 1),
-	    cellcoord(u->x0, u->size, c->level, c->ix), w);
-	diff(cellcoord(u->y0, u->size, c->level, c->iy + 1),
-	    cellcoord(u->y0, u->size, c->level, c->iy), h);
+	diff(cell_coord(u->x0, u->size, c->level, c->ix + 1),
+	    cell_coord(u->x0, u->size, c->level, c->ix), w);
+	diff(cell_coord(u->y0, u->size, c->level, c->iy + 1),
+	    cell_coord(u->y0, u->size, c->level, c->iy), h);
 	if (frac != 0)
 		addprod3(s, frac, w, h, (double[2]){ 1, 0 });
 }
@@ -492,13 +492,13 @@ crossing(struct point a, struct point b, int axis, double l, double lo,
 	struct xsum n, s;
 	double d[2], v;
 
-	xs_init(&n);
-	xs_init(&s);
+	area_init(&n);
+	area_init(&s);
 	crossnum(&n, a, b, axis, l, d);
 	addquot(&s, &n, d);
-	v = xs_round(&s);
-	xs_free(&n);
-	xs_free(&s);
+	v = area_round(&s);
+	area_free(&n);
+	area_free(&s);
 	return v < lo ? lo : v > hi ? hi : v;
 }
 
@@ -541,11 +541,11 @@ cmpturn(const struct piece *pa, int enda, const struct piece *pb, int endb)
 	diff(pa->b.y, pa->a.y, ay);
 	diff(pb->b.x, pb->a.x, bx);
 	diff(pb->b.y, pb->a.y, by);
-	xs_init(&t);
+	area_init(&t);
 	addprod3(&t, 1, ax, by, one);
 	addprod3(&t, -1, ay, bx, one);
-	sign = xs_sign(&t);
-	xs_free(&t);
+	sign = area_sign(&t);
+	area_free(&t);
 	/* b clockwise of a: a first; an exit's direction is its reverse */
 	return enda == endb ? sign : -sign;
 }
@@ -566,19 +566,19 @@ cmpevent(const void *va, const void *vb)
 	axis = sa == BOTTOM || sa == TOP;
 	l = sa == BOTTOM ? evcell[2] : sa == TOP ? evcell[3] :
 	    sa == LEFT ? evcell[0] : evcell[1];
-	xs_init(&na);
-	xs_init(&nb);
-	xs_init(&t);
+	area_init(&na);
+	area_init(&nb);
+	area_init(&t);
 	crossnum(&na, pa->a, pa->b, axis, l, da);
 	crossnum(&nb, pb->a, pb->b, axis, l, db);
 	/* na / da - nb / db: (na db - nb da) / (da db) */
 	addxsprod(&t, 1, &na, db);
 	addxsprod(&t, -1, &nb, da);
-	sign = xs_sign(&t) * ((da[0] > 0) - (da[0] < 0)) *
+	sign = area_sign(&t) * ((da[0] > 0) - (da[0] < 0)) *
 	    ((db[0] > 0) - (db[0] < 0));
-	xs_free(&na);
-	xs_free(&nb);
-	xs_free(&t);
+	area_free(&na);
+	area_free(&nb);
+	area_free(&t);
 	if (sa == TOP || sa == LEFT)
 		sign = -sign;
 	if (sign != 0)
@@ -644,11 +644,11 @@ splitpinches(struct cutter *ct, size_t first)
 	}
 	sorted = xreallocarray(NULL, k, sizeof(*sorted));
 	memcpy(sorted, v, k * sizeof(*v));
-	qsort(sorted, k, sizeof(*sorted), point_cmp);
+	qsort(sorted, k, sizeof(*sorted), geom_pointcmp);
 	dup = sorted;		/* the points given twice, in place */
 	for (i = 1; i < k; i++)
-		if (point_cmp(&sorted[i - 1], &sorted[i]) == 0 &&
-		    (ndup == 0 || point_cmp(&dup[ndup - 1], &sorted[i]) != 0))
+		if (geom_pointcmp(&sorted[i - 1], &sorted[i]) == 0 &&
+		    (ndup == 0 || geom_pointcmp(&dup[ndup - 1], &sorted[i]) != 0))
 			dup[ndup++] = sorted[i];
 	if (ndup == 0) {
 		free(sorted);
@@ -663,7 +663,7 @@ splitpinches(struct cutter *ct, size_t first)
 	/* the loops cut off are written over the front of v as they close */
 	for (i = 0; i < k; i++) {
 		struct point *d = bsearch(&v[i], dup, ndup, sizeof(*dup),
-		    point_cmp);
+		    geom_pointcmp);
 		size_t id = d != NULL ? (size_t)(d - dup) : (size_t)-1;
 
 		if (id != (size_t)-1 && at[id] != (size_t)-1) {
@@ -671,7 +671,7 @@ splitpinches(struct cutter *ct, size_t first)
 
 			for (j = from; j < top; j++) {
 				struct point *e = bsearch(&stack[j], dup,
-				    ndup, sizeof(*dup), point_cmp);
+				    ndup, sizeof(*dup), geom_pointcmp);
 
 				if (j > from && e != NULL)
 					at[e - dup] = (size_t)-1;
@@ -771,10 +771,10 @@ cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
 	ct->nlp = ct->nll = ct->lstart = 0;
 	*pts = NULL;
 	*len = NULL;
-	x[0] = cellcoord(ct->u.x0, ct->u.size, level, c->ix);
-	x[1] = cellcoord(ct->u.x0, ct->u.size, level, c->ix + 1);
-	y[0] = cellcoord(ct->u.y0, ct->u.size, level, c->iy);
-	y[1] = cellcoord(ct->u.y0, ct->u.size, level, c->iy + 1);
+	x[0] = cell_coord(ct->u.x0, ct->u.size, level, c->ix);
+	x[1] = cell_coord(ct->u.x0, ct->u.size, level, c->ix + 1);
+	y[0] = cell_coord(ct->u.y0, ct->u.size, level, c->iy);
+	y[1] = cell_coord(ct->u.y0, ct->u.size, level, c->iy + 1);
 	box[0] = x[0], box[1] = x[1], box[2] = y[0], box[3] = y[1];
 	if (n > ct->pccap) {
 		ct->pccap = n + n / 2;

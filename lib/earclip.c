@@ -40,7 +40,7 @@ struct earclip {
 };
 
 struct earclip *
-ear_new(void)
+earclip_new(void)
 {
 	struct earclip *ec = xmalloc(sizeof(*ec));
 
@@ -49,7 +49,7 @@ ear_new(void)
 }
 
 void
-ear_free(struct earclip *ec)
+earclip_free(struct earclip *ec)
 {
 	if (ec == NULL)
 		return;
@@ -441,7 +441,7 @@ clip(struct earclip *ec, size_t k, size_t n)
  * ear is found (loops that cross or touch).
  */
 size_t
-ear_region(struct earclip *ec, const struct point *v, const size_t *len,
+earclip_region(struct earclip *ec, const struct point *v, const size_t *len,
     size_t nloops, const size_t **tri)
 {
 	size_t i, j, nh, total, *heads, holes = 0, placed = 0;
@@ -458,7 +458,7 @@ ear_region(struct earclip *ec, const struct point *v, const size_t *len,
 		    sizeof(*ec->first));
 	}
 	for (i = total = 0; i < nloops; i++) {
-		int s = loop_sign(v + total, len[i]);
+		int s = area_loopsign(v + total, len[i]);
 
 		if (s == 0 || len[i] < 3)
 			return (size_t)-1;
@@ -482,13 +482,13 @@ ear_region(struct earclip *ec, const struct point *v, const size_t *len,
 			const struct point *p = &v[ec->first[j]];
 			size_t k, best = i;
 
-			if (ec->outer[j] || !ring_contains(v + ec->first[i],
+			if (ec->outer[j] || !geom_ringcontains(v + ec->first[i],
 			    len[i], p[0], p[1]))
 				continue;
 			for (k = 0; k < nloops; k++)
-				if (k != i && ec->outer[k] && ring_contains(v +
+				if (k != i && ec->outer[k] && geom_ringcontains(v +
 				    ec->first[k], len[k], p[0], p[1]) &&
-				    ring_contains(v + ec->first[best],
+				    geom_ringcontains(v + ec->first[best],
 				    len[best], v[ec->first[k]],
 				    v[ec->first[k] + 1]))
 					best = k;

@@ -44,7 +44,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "num.h"
 
 /* The 10^e used: e = -k for every level k, and -k + 1 for one more digit. */
 #define E10MIN	(-292)

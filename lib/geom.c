@@ -10,7 +10,7 @@
 #include <math.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "num.h"
 
 /* (3 + 16 eps) eps, eps = 2^-53: Shewchuk's ccwerrboundA. */
 #define ORIENT_BOUND	(3.3306690738754716e-16)
@@ -122,8 +122,8 @@ addprod4(struct xsum *x, int sign, const double *p, const double *q,
 		    s[k >> 3 & 1] == 0)
 			continue;
 		two_product(sign * p[k & 1], q[k >> 1 & 1], &hi, &lo);
-		xs_addprod3(x, hi, r[k >> 2 & 1], s[k >> 3 & 1]);
-		xs_addprod3(x, lo, r[k >> 2 & 1], s[k >> 3 & 1]);
+		area_addprod3(x, hi, r[k >> 2 & 1], s[k >> 3 & 1]);
+		area_addprod3(x, lo, r[k >> 2 & 1], s[k >> 3 & 1]);
 	}
 }
 
@@ -150,7 +150,7 @@ incircle_exact(double d[6][2])
 		d[i][0] = ldexp(d[i][0], -e);
 		d[i][1] = ldexp(d[i][1], -e);
 	}
-	xs_init(&x);
+	area_init(&x);
 	for (i = 0; i < 3; i++) {
 		const double *rx = d[2 * i], *ry = d[2 * i + 1];
 		const double *sx = d[2 * ((i + 1) % 3)];
@@ -163,8 +163,8 @@ incircle_exact(double d[6][2])
 		addprod4(&x, 1, ry, ry, sx, ty);
 		addprod4(&x, -1, ry, ry, tx, sy);
 	}
-	sign = xs_sign(&x);
-	xs_free(&x);
+	sign = area_sign(&x);
+	area_free(&x);
 	return sign;
 }
 
@@ -218,7 +218,7 @@ side_nudged(struct point a, struct point b, struct point c, struct point d)
  * that a ray through a vertex counts it once or not at all.
  */
 int
-ray_crosses(struct point a, struct point b, struct point p,
+geom_raycrosses(struct point a, struct point b, struct point p,
     struct point toward)
 {
 	int aabove, babove;
@@ -244,20 +244,20 @@ ray_crosses(struct point a, struct point b, struct point p,
  * edge.
  */
 int
-ring_contains(const struct point *v, size_t n, struct point p,
+geom_ringcontains(const struct point *v, size_t n, struct point p,
     struct point toward)
 {
 	size_t i, j;
 	int inside = 0;
 
 	for (i = 0, j = n - 1; i < n; j = i++)
-		inside ^= ray_crosses(v[j], v[i], p, toward);
+		inside ^= geom_raycrosses(v[j], v[i], p, toward);
 	return inside;
 }
 
 /* Points in order by x, then y: for qsort and bsearch. */
 int
-point_cmp(const void *va, const void *vb)
+geom_pointcmp(const void *va, const void *vb)
 {
 	const struct point *a = va, *b = vb;
 

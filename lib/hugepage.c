@@ -16,7 +16,7 @@
 #define HUGEPAGE	((size_t)2 << 20)
 
 void
-hugepages(void *p, size_t n)
+hugepage_hint(void *p, size_t n)
 {
 #ifdef MADV_HUGEPAGE
 	long size = sysconf(_SC_PAGESIZE);

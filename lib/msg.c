@@ -19,7 +19,7 @@ static time_t started;	/* for progress */
  * otherwise turn it into a write error message.
  */
 void
-setprogname_(const char *argv0)
+xsetprogname(const char *argv0)
 {
 	const char *p = strrchr(argv0, '/');
 
@@ -122,7 +122,7 @@ xcalloc(size_t n, size_t size)
 
 	if (p == NULL)
 		die(1, "out of memory");
-	hugepages(p, n * size);
+	hugepage_hint(p, n * size);
 	return p;
 }
 

@@ -10,7 +10,7 @@ static const char *const opnames[] = { NULL, "and", "or", "minus", "xor" };
 
 /* The operator a word names, 0 for none. */
 int
-qt_opcode(const char *word)
+op_code(const char *word)
 {
 	int k;
 
@@ -21,7 +21,7 @@ qt_opcode(const char *word)
 }
 
 const char *
-qt_opname(int op)
+op_name(int op)
 {
 	return op >= QT_AND && op <= QT_XOR ? opnames[op] : "?";
 }
@@ -33,7 +33,7 @@ qt_opname(int op)
  * once, in order.  Returns NULL, or what is wrong.
  */
 const char *
-qt_opterms(char *const *word, int n, long nobjects, int *term)
+op_terms(char *const *word, int n, long nobjects, int *term)
 {
 	const char *end;
 	long long v;
@@ -43,7 +43,7 @@ qt_opterms(char *const *word, int n, long nobjects, int *term)
 	for (i = 0; i < n; i++) {
 		if (need == 0)
 			return "op expression goes on after its end";
-		if ((op = qt_opcode(word[i])) != 0) {
+		if ((op = op_code(word[i])) != 0) {
 			term[i] = -op;
 			need++;
 			continue;

@@ -7,10 +7,10 @@
 #include <stdint.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "num.h"
 
 #if POW5MIN != -342 || POW5MAX != 325
-#error "lib/internal.h and tools/gen/genpow5.c disagree"
+#error "lib/num.h and tools/gen/genpow5.c disagree"
 #endif
 
 const struct pow5 pow5tab[POW5MAX - POW5MIN + 1] = {

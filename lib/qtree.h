@@ -1,6 +1,29 @@
 /*
  * qtree.h: the one library of the qtree toolkit.
  *
+ * Contents, in order, and the prefix that a file's names share:
+ *	msg.c		messages as err(3)'s (die, errat, warnat, usageexit,
+ *			progress), and x-: libc's calls checked (xmalloc,
+ *			xgrow, xstrdup, xsetprogname); openin, closeout
+ *	hugepage.c	hugepage_hint
+ *	parse.c		parse-: numbers read (parsereal, parselong,
+ *			parsecoordok)
+ *	fmt.c		fmt-: numbers written (fmtreal, fmtint)
+ *	geom.c		orient2d, incircle (Shewchuk's names), and geom_:
+ *			points and rings
+ *	arc.c		arc_: circular arcs, exactly; an arc against a box
+ *	arccheck.c	arc_: the questions of polyread's checks of arcs
+ *	cell.c		cell_: cell arithmetic, paths, the range rule
+ *	cellset.c	cellset_: cells in memory, neighbours
+ *	corner.c	corner_: a mesh's vertices as grid points
+ *	read.c		qt_: the qtree(5) reader (qt_open, qt_read, ...)
+ *	op.c		op_: the operators of combined streams
+ *	split.c		split_: the exact classifier
+ *	write.c		qt_: the qtree(5) writer (qt_cell, ..., qt_end)
+ *	area.c		area_: exact sums, a ring's area and moments
+ *	cut.c		cut_: cut cells, area fractions, regions as loops
+ *	earclip.c	earclip_: the triangles of a region
+ *
  * Conventions.
  * Orientation: orient2d(a, b, c) > 0 when c lies to the left of the directed
  * line a->b (the triangle a, b, c runs counter-clockwise), < 0 when to the
@@ -24,7 +47,7 @@
 
 /* msg.c: messages, memory, files; every message is "prog: file:line: text" */
 extern const char *progname;
-void	 setprogname_(const char *);
+void	 xsetprogname(const char *);
 void	 die(int, const char *, ...);
 void	 errat(const char *, long, const char *, ...);
 void	 warnat(const char *, long, const char *, ...);
@@ -32,7 +55,6 @@ void	*xmalloc(size_t);
 void	*xreallocarray(void *, size_t, size_t);
 void	*xcalloc(size_t, size_t);
 void	*xgrowto(void *, size_t *, size_t, size_t);
-void	 hugepages(void *, size_t);
 char	*xstrdup(const char *);
 FILE	*openin(const char *, const char **);
 void	 progress(int, const char *, ...);
@@ -46,13 +68,16 @@ xgrow(void *p, size_t *cap, size_t n, size_t size)
 	return n <= *cap ? p : xgrowto(p, cap, n, size);
 }
 
+/* hugepage.c: a hint that a large table be put on huge pages (Linux) */
+void	 hugepage_hint(void *, size_t);
+
 /*
  * parse.c: numbers read, in the C locale whatever LANG says; 0 on success
  * with *end after the number, -1 malformed, -2 out of range.
  */
 int	 parsereal(const char *, const char **, double *);
 int	 parselong(const char *, const char **, long long *);
-int	 coordok(double);
+int	 parsecoordok(double);
 
 /* fmt.c: numbers written; each returns the terminating NUL */
 char	*fmtreal(char *, double);	/* shortest that reads back; 32 bytes */
@@ -65,9 +90,10 @@ struct point {
 int	 orient2d(double, double, double, double, double, double);
 int	 incircle(double, double, double, double, double, double, double,
 	    double);
-int	 ray_crosses(struct point, struct point, struct point, struct point);
-int	 point_cmp(const void *, const void *);
-int	 ring_contains(const struct point *, size_t, struct point,
+int	 geom_raycrosses(struct point, struct point, struct point,
+	    struct point);
+int	 geom_pointcmp(const void *, const void *);
+int	 geom_ringcontains(const struct point *, size_t, struct point,
 	    struct point);
 
 /*
@@ -91,19 +117,14 @@ int	 ring_contains(const struct point *, size_t, struct point,
  * orientation against a->b when o is not NULL and the power is negative.
  * The box is conservative: the arc lies strictly inside it.
  */
-struct interval {
-	double	lo, hi;
-};
+#include "arcfilter.h"	/* struct arcfilter: the library's, not a program's */
 
 struct arc {
 	struct point	 a, m, b;
 	int		 sd;	/* orient2d(a, b, m): m's side */
 	int		 oc;	/* orient2d(a, b, C) */
-	struct interval	 ibx, iby, imx, imy, id, iux, iuy;
-	double		 xmin, ymin, xmax, ymax;
-	/* the filter: C within ec of (cx, cy); r^2 in (tin, tout) */
-	double		 cx, cy, ec, tin, tout;
-	int		 exactc[2];	/* C's x, y is cx, cy exactly */
+	double		 xmin, ymin, xmax, ymax;	/* the box */
+	struct arcfilter f;
 };
 int	 arc_init(struct arc *, struct point, struct point, struct point);
 int	 arc_power(const struct arc *, double, double);
@@ -121,8 +142,8 @@ int	 arc_nearpower(const struct arc *, double, double, double, double,
 	    const signed char[4], const signed char[4], int *);
 
 /*
- * For polyread's checks: arc_defect says why three points make no arc, or
- * NULL; crossdir gives the sign of cross(b - a, d - c); arc_dotcentre that
+ * arccheck.c, for polyread's checks: arc_defect says why three points make no arc, or
+ * NULL; arc_crossdir gives the sign of cross(b - a, d - c); arc_dotcentre that
  * of (C - p) . (q - p), arc_dotcentrecut that of (C - X) . (q - p) for X
  * where the line p->q meets the chord's line (not parallel to it),
  * arc_linepower that of dist(C, line pq)^2 - r^2, arc_tangentcross that of
@@ -135,7 +156,7 @@ int	 arc_nearpower(const struct arc *, double, double, double, double,
  */
 const char *arc_defect(struct point, struct point, struct point,
 	    const char *);
-int	 crossdir(struct point, struct point, struct point, struct point);
+int	 arc_crossdir(struct point, struct point, struct point, struct point);
 int	 arc_dotcentre(const struct arc *, struct point, struct point);
 int	 arc_dotcentrecut(const struct arc *, struct point, struct point);
 int	 arc_linepower(const struct arc *, struct point, struct point);
@@ -174,25 +195,26 @@ struct cell {
 	size_t		 textlen;	/* the bytes through the class */
 };
 
-double	 cellcoord(double, double, int, uint64_t);
+double	 cell_coord(double, double, int, uint64_t);
 /*
- * The range rule of qtree(5): univdeepest gives a universe's deepest
+ * The range rule of qtree(5): cell_univdeepest gives a universe's deepest
  * level, 0 to QT_MAXLEVEL, the last at which every cell corner is a
- * distinct double and every corner and size is a coordinate coordok
+ * distinct double and every corner and size is a coordinate parsecoordok
  * takes, or -1 when the universe itself breaks the rule; why (n bytes,
  * when not NULL) says what stops the next level, or the universe.
- * univcheck gives NULL when level (-1: none) is within the universe's
+ * cell_univcheck gives NULL when level (-1: none) is within the universe's
  * reach, else the message: "level L is past the deepest level D of
  * universe X0 Y0 SIZE: why", or "universe X0 Y0 SIZE is outside the
  * supported range: why"; it is overwritten by the next call.
  */
-int	 univdeepest(const struct universe *, char *, size_t);
-const char *univcheck(const struct universe *, int);
-int	 pathcell(const char *, int, uint64_t *, uint64_t *);
-int	 pathprefix(const char *, int, const char *, int);
-int	 cellcmp(const struct cell *, const struct cell *);
-unsigned optclasses(const char *);	/* -c: F, E, P as bits 1, 2, 4 */
-#define CLASSBIT(c)	((c) == 'F' ? 1u : (c) == 'E' ? 2u : (c) == 'P' ? 4u : 0u)
+int	 cell_univdeepest(const struct universe *, char *, size_t);
+const char *cell_univcheck(const struct universe *, int);
+int	 cell_frompath(const char *, int, uint64_t *, uint64_t *);
+int	 cell_pathprefix(const char *, int, const char *, int);
+int	 cell_cmp(const struct cell *, const struct cell *);
+unsigned cell_optclasses(const char *);	/* -c: F, E, P as bits 1, 2, 4 */
+#define CELL_CLASSBIT(c)	\
+	((c) == 'F' ? 1u : (c) == 'E' ? 2u : (c) == 'P' ? 4u : 0u)
 
 /*
  * cellset.c: cells in memory by level, column and row, for neighbour
@@ -206,21 +228,22 @@ void	 cellset_put(struct cellset *, int, uint64_t, uint64_t, char);
 void	 cellset_reserve(struct cellset *, size_t);
 int	 cellset_get(const struct cellset *, int, uint64_t, uint64_t);
 int	 cellset_above(const struct cellset *, int, uint64_t, uint64_t);
-int	 cellnext(int, uint64_t, uint64_t, int, int, uint64_t *, uint64_t *);
+int	 cellset_next(int, uint64_t, uint64_t, int, int, uint64_t *,
+	    uint64_t *);
 
 /*
  * corner.c: a mesh's vertices as integer points of the grid at level
  * QT_GRID, numbered 1, 2, ... in order of first use by cells meshed in
- * preorder; corners_at says where the current cell starts, which lets the
- * points behind it go.  corners_find gives 0 for a point not numbered.
+ * preorder; corner_at says where the current cell starts, which lets the
+ * points behind it go.  corner_find gives 0 for a point not numbered.
  */
-struct corners *corners_new(int);
-void	 corners_free(struct corners *);
-void	 corners_at(struct corners *, uint64_t, uint64_t);
-uint32_t corners_id(struct corners *, uint64_t, uint64_t);
-uint32_t corners_find(const struct corners *, uint64_t, uint64_t);
-size_t	 corners_count(const struct corners *);
-void	 corners_point(const struct corners *, uint32_t, uint64_t *,
+struct corners *corner_new(int);
+void	 corner_free(struct corners *);
+void	 corner_at(struct corners *, uint64_t, uint64_t);
+uint32_t corner_id(struct corners *, uint64_t, uint64_t);
+uint32_t corner_find(const struct corners *, uint64_t, uint64_t);
+size_t	 corner_count(const struct corners *);
+void	 corner_point(const struct corners *, uint32_t, uint64_t *,
 	    uint64_t *);
 
 /*
@@ -316,15 +339,15 @@ void	 qt_fail(const struct qtreader *, const char *, ...);
 void	 qt_close(struct qtreader *);
 
 /*
- * op.c: the operators of combined streams.  qt_opcode gives 0 for a word
- * that names none; qt_opterms checks an op record's words (see qtree(5))
+ * op.c: the operators of combined streams.  op_code gives 0 for a word
+ * that names none; op_terms checks an op record's words (see qtree(5))
  * into terms and returns NULL, or a message.
  */
 enum { QT_AND = 1, QT_OR, QT_MINUS, QT_XOR };
 #define QT_MAXOBJECTS	32	/* an op record's 63 terms, a line's 64 fields */
-int	 qt_opcode(const char *);
-const char *qt_opname(int);
-const char *qt_opterms(char *const *, int, long, int *);
+int	 op_code(const char *);
+const char *op_name(int);
+const char *op_terms(char *const *, int, long, int *);
 
 /*
  * split.c: the exact classifier of qtsplit(1), for any program that
@@ -391,11 +414,12 @@ unsigned long long qt_bytes(void);
 void	 qt_end(void);
 
 /*
- * area.c (qtstats): exact sums of products.  An xsum is a floating-point
- * expansion; xs_round gives the double nearest to its exact value.
- * struct moments sums mo_edge over the edges of rings: a2 is twice the
- * signed area, mx and my six times the first moments.  loop_sign gives the
- * exact sign of a loop's area: 1 counter-clockwise, -1 clockwise.
+ * area.c (qtstats, cut.c): exact sums of products.  An xsum is a
+ * floating-point expansion; area_round gives the double nearest to its
+ * exact value.  struct moments sums area_moedge over the edges of rings:
+ * a2 is twice the signed area, mx and my six times the first moments.
+ * area_loopsign gives the exact sign of a loop's area: 1 counter-clockwise,
+ * -1 clockwise.
  */
 struct xsum {
 	double	*h;
@@ -404,20 +428,20 @@ struct xsum {
 struct moments {
 	struct xsum	 a2, mx, my;
 };
-void	 xs_init(struct xsum *);
-void	 xs_free(struct xsum *);
-void	 xs_add(struct xsum *, double);
-void	 xs_addprod(struct xsum *, double, double);
-void	 xs_addprod3(struct xsum *, double, double, double);
-void	 xs_addxs(struct xsum *, const struct xsum *, double);
-int	 xs_sign(const struct xsum *);
-double	 xs_round(const struct xsum *);
-int	 loop_sign(const struct point *, size_t);
-void	 mo_init(struct moments *);
-void	 mo_zero(struct moments *);
-void	 mo_edge(struct moments *, struct point, struct point);
-void	 mo_addmo(struct moments *, const struct moments *, int);
-void	 mo_result(const struct moments *, double *, double *, double *);
+void	 area_init(struct xsum *);
+void	 area_free(struct xsum *);
+void	 area_add(struct xsum *, double);
+void	 area_addprod(struct xsum *, double, double);
+void	 area_addprod3(struct xsum *, double, double, double);
+void	 area_addsum(struct xsum *, const struct xsum *, double);
+int	 area_sign(const struct xsum *);
+double	 area_round(const struct xsum *);
+int	 area_loopsign(const struct point *, size_t);
+void	 area_moinit(struct moments *);
+void	 area_mozero(struct moments *);
+void	 area_moedge(struct moments *, struct point, struct point);
+void	 area_moadd(struct moments *, const struct moments *, int);
+void	 area_moresult(const struct moments *, double *, double *, double *);
 
 /*
  * cut.c: cut cells.  A cutter holds the rings, added in order, and gives
@@ -447,15 +471,15 @@ const size_t *cut_looprings(const struct cutter *);
 /*
  * earclip.c: the triangles of a region given as loops, outer loops
  * counter-clockwise and holes clockwise inside them (as cut_loops gives
- * it), with exact orientations: ear_region gives their count and, in
+ * it), with exact orientations: earclip_region gives their count and, in
  * *tri, triples of indices into the loops' points, every triangle
  * counter-clockwise with positive area, every point a corner; or
  * (size_t)-1 when the loops are not such a region.  The array is the
  * earclip's, until the next call.
  */
-struct earclip *ear_new(void);
-void	 ear_free(struct earclip *);
-size_t	 ear_region(struct earclip *, const struct point *, const size_t *,
+struct earclip *earclip_new(void);
+void	 earclip_free(struct earclip *);
+size_t	 earclip_region(struct earclip *, const struct point *, const size_t *,
 	    size_t, const size_t **);
 
 #endif

@@ -15,11 +15,10 @@
 #include <unistd.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "celltext.h"
+#include "inline.h"
+#include "reader.h"
 
-enum { BEFORE_HEADER, IN_BODY, AFTER_END };
-
-#define NFIELD	64	/* fields of a record, an elem's at most */
 #define MAXLINE	(1 << 20)	/* bytes of a line, its newline excluded */
 /*
  * qt_read checks a cell straight in its buffer when this much input is
@@ -29,53 +28,6 @@ enum { BEFORE_HEADER, IN_BODY, AFTER_END };
  */
 #define FASTROOM	256
 
-struct buf {
-	char	*s;
-	size_t	 len, cap;
-};
-
-struct qtreader {
-	FILE		*fp;
-	const char	*name;
-	int		 flags;
-	long		 lineno;
-	char		*buf;
-	size_t		 cap, pos, end;	/* unread input: buf[pos..end-1] */
-	int		 eof;
-	int		 nonewline;	/* the last line read had none */
-	int		 state;
-	unsigned long long count;	/* records, for the end record */
-	char		*field[NFIELD];
-	int		 nfield;
-	int		 haveuniverse, havelevel, havecells;
-	int		 deepest;	/* the deepest cell's level, -1 before one */
-	struct universe	 u;
-	int		 ulevels;	/* the universe's deepest level */
-	int		 level;		/* the level record's */
-	struct celltext	*text;	/* shared with the writer */
-	char		 tail[192];	/* a cell's fields after its level */
-	/* the last cell: its path, NUL-terminated, and its prefixes' cells */
-	char		 path[QT_MAXLEVEL + 1];
-	int		 pathlen;
-	int		 lastleaf;
-	uint64_t	 pathix[QT_MAXLEVEL + 1], pathiy[QT_MAXLEVEL + 1];
-	/* the ring being read: its vertices and its text */
-	long		 nrings;
-	struct ring	 ring;
-	size_t		 ringcap, vleft;
-	long		 ringline;
-	int		 lasta;		/* the last ring record was an a */
-	struct buf	 ringtext;
-	/* a combined stream's objects so far, and its op record */
-	long		 nobjects;
-	int		 haveop;
-	int		 opterm[NFIELD];
-	/* the mesh read so far */
-	unsigned long long nvertex, nelem;
-	unsigned long long elemv[NFIELD];
-	char		*type;
-	size_t		 typecap;
-};
 
 struct qtreader *
 qt_open(FILE *fp, const char *name, int flags)
@@ -151,8 +103,8 @@ report(const struct qtreader *r, int force)
 }
 
 /* A real field of a record: a coordinate within the supported range. */
-static double
-realfield(struct qtreader *r, const char *s, const char *what)
+double
+read_realfield(struct qtreader *r, const char *s, const char *what)
 {
 	const char *end;
 	double v;
@@ -162,14 +114,14 @@ realfield(struct qtreader *r, const char *s, const char *what)
 		qt_fail(r, "%s out of range: %s", what, s);
 	if (rc < 0 || *end != '\0')
 		qt_fail(r, "%s is not a number: %s", what, s);
-	if (!coordok(v))
+	if (!parsecoordok(v))
 		qt_fail(r, "%s outside the supported range "
 		    "(0 or 1e-100 to 1e100 in magnitude): %s", what, s);
 	return v;
 }
 
-static long long
-intfield(struct qtreader *r, const char *s, const char *what, long long lo,
+long long
+read_intfield(struct qtreader *r, const char *s, const char *what, long long lo,
     long long hi)
 {
 	const char *end;
@@ -186,8 +138,8 @@ intfield(struct qtreader *r, const char *s, const char *what, long long lo,
 	return v;
 }
 
-static void
-nfields(struct qtreader *r, int lo, int hi)
+void
+read_nfields(struct qtreader *r, int lo, int hi)
 {
 	if (r->nfield < lo || r->nfield > hi)
 		qt_fail(r, "%s record has %d fields, expected %d",
@@ -249,7 +201,8 @@ coordfield(struct qtreader *r, const char *text, int level, int axis,
 		*out = k->v;
 		return 1;
 	}
-	*out = realfield(r, text, axis == 0 ? "x" : axis == 1 ? "y" : "size");
+	*out = read_realfield(r, text,
+	    axis == 0 ? "x" : axis == 1 ? "y" : "size");
 	return *out == k->v;
 }
 
@@ -329,17 +282,17 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 	int level, k;
 
 	if (rec->kind == QT_LEAF)
-		nfields(r, 9, 11);
+		read_nfields(r, 9, 11);
 	else
-		nfields(r, 8, 8);
+		read_nfields(r, 8, 8);
 	if (!r->haveuniverse)
 		qt_fail(r, "%s record before the universe record", tag);
-	level = intfield(r, r->field[2], "level", 0, QT_MAXLEVEL);
+	level = read_intfield(r, r->field[2], "level", 0, QT_MAXLEVEL);
 	if (level > r->ulevels)
-		qt_fail(r, "%s", univcheck(&r->u, level));
-	if (pathcell(path, level, &ix, &iy) < 0)
+		qt_fail(r, "%s", cell_univcheck(&r->u, level));
+	if (cell_frompath(path, level, &ix, &iy) < 0)
 		qt_fail(r, "path %s does not fit level %d", path, level);
-	k = level > 0 ? pathprefix(path, level, r->path, r->pathlen) : 0;
+	k = level > 0 ? cell_pathprefix(path, level, r->path, r->pathlen) : 0;
 	switch (r->flags & QT_UNSEALED ? FOLLOWS :
 	    cellorder(r, level > 0 ? path : "", level, k)) {
 	case INLEAF:
@@ -358,8 +311,8 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 	setprefixes(r, path, level, k);
 	c->path = level > 0 ? r->path : ".";
 	lim = ((unsigned long long)1 << level) - 1;
-	c->ix = intfield(r, r->field[3], "ix", 0, lim);
-	c->iy = intfield(r, r->field[4], "iy", 0, lim);
+	c->ix = read_intfield(r, r->field[3], "ix", 0, lim);
+	c->iy = read_intfield(r, r->field[4], "iy", 0, lim);
 	if (c->ix != ix || c->iy != iy)
 		qt_fail(r, "cell %s is at column %llu row %llu, not %s %s",
 		    c->path, (unsigned long long)ix, (unsigned long long)iy,
@@ -388,7 +341,7 @@ cellrec(struct qtreader *r, struct qtrec *rec)
 			qt_fail(r, "leaf class is not F, E or P: %s", s);
 		c->class = s[0];
 		if (r->nfield >= 10)
-			c->id = intfield(r, r->field[9], "element id", 1,
+			c->id = read_intfield(r, r->field[9], "element id", 1,
 			    LLONG_MAX);
 		if (r->nfield == 11)
 			c->frac = fracfield(r, r->field[10], c->class);
@@ -419,7 +372,7 @@ fastpath(struct qtreader *r, const char **pp, const char *end, uint64_t *ix,
 		*common = 0;
 		return 0;
 	}
-	k = pathprefix(p, (int)(end - p), r->path, r->pathlen);
+	k = cell_pathprefix(p, (int)(end - p), r->path, r->pathlen);
 	/* the prefixes past k are the new path's from here on */
 	for (j = k; (d = (unsigned char)p[j] - '0') <= 3 && j < QT_MAXLEVEL;
 	    j++) {
@@ -557,194 +510,19 @@ fastcell(struct qtreader *r, struct qtrec *rec, char *line,
 }
 
 static void
-universerec(struct qtreader *r, struct qtrec *rec)
-{
-	const char *msg;
-
-	nfields(r, 4, 4);
-	if (r->haveuniverse)
-		qt_fail(r, "second universe record");
-	if (r->nrings > 0 || r->havecells)
-		qt_fail(r, "universe record after rings or cells");
-	rec->u.x0 = realfield(r, r->field[1], "x0");
-	rec->u.y0 = realfield(r, r->field[2], "y0");
-	rec->u.size = realfield(r, r->field[3], "size");
-	if (rec->u.size <= 0)
-		qt_fail(r, "universe size is not positive");
-	if ((msg = univcheck(&rec->u, r->havelevel ? r->level : -1)) != NULL)
-		qt_fail(r, "%s", msg);
-	r->ulevels = univdeepest(&rec->u, NULL, 0);
-	r->u = rec->u;
-	r->haveuniverse = 1;
-	r->text = celltext_open(&r->u);
-}
-
-static void
-levelrec(struct qtreader *r, struct qtrec *rec)
-{
-	const char *msg;
-
-	nfields(r, 2, 2);
-	if (r->havelevel)
-		qt_fail(r, "second level record");
-	if (r->havecells)
-		qt_fail(r, "level record after cells");
-	rec->level = intfield(r, r->field[1], "level", 0, QT_MAXLEVEL);
-	if (r->haveuniverse && (msg = univcheck(&r->u, rec->level)) != NULL)
-		qt_fail(r, "%s", msg);
-	r->level = rec->level;
-	r->havelevel = 1;
-}
-
-static void
-ringrec(struct qtreader *r)
-{
-	struct ring *g = &r->ring;
-
-	nfields(r, 4, 4);
-	if (!r->haveuniverse)
-		qt_fail(r, "ring record before the universe record");
-	if (r->havecells)
-		qt_fail(r, "ring record after cells");
-	if (r->haveop)
-		qt_fail(r, "ring record after the op record");
-	g->id = intfield(r, r->field[1], "ring id", 1, (long long)1 << 40);
-	if (g->id != r->nrings + 1)
-		qt_fail(r, "ring %ld follows ring %ld", g->id, r->nrings);
-	if (strcmp(r->field[2], "outer") == 0)
-		g->hole = 0;
-	else if (strcmp(r->field[2], "hole") == 0)
-		g->hole = 1;
-	else
-		qt_fail(r, "ring kind is not outer or hole: %s", r->field[2]);
-	r->vleft = intfield(r, r->field[3], "vertex count", 3,
-	    (long long)1 << 40);
-	g->n = 0;
-	g->narcs = 0;
-	r->lasta = 0;
-	r->nrings++;
-	r->ringline = r->lineno;
-	r->ringtext.len = 0;
-}
-
-/* An object of a combined stream: its rings are numbered from 1 again. */
-static void
-objectrec(struct qtreader *r, struct qtrec *rec)
-{
-	nfields(r, 2, 2);
-	if (r->havecells)
-		qt_fail(r, "object record after cells");
-	if (r->haveop)
-		qt_fail(r, "object record after the op record");
-	if (r->nobjects == 0 && r->nrings > 0)
-		qt_fail(r, "object record after rings of no object");
-	rec->object = intfield(r, r->field[1], "object", 1, QT_MAXOBJECTS);
-	if (rec->object != r->nobjects + 1)
-		qt_fail(r, "object %ld follows object %ld", rec->object,
-		    r->nobjects);
-	r->nobjects++;
-	r->nrings = 0;
-}
-
-static void
-oprec(struct qtreader *r, struct qtrec *rec)
-{
-	const char *msg;
-
-	if (r->nfield < 2)
-		qt_fail(r, "op record without an expression");
-	if (r->havecells)
-		qt_fail(r, "op record after cells");
-	if (r->haveop)
-		qt_fail(r, "second op record");
-	if ((msg = qt_opterms(r->field + 1, r->nfield - 1, r->nobjects,
-	    r->opterm)) != NULL)
-		qt_fail(r, "%s", msg);
-	rec->op.n = r->nfield - 1;
-	rec->op.term = r->opterm;
-	r->haveop = 1;
-}
-
-/* The arc of the ring's edge i, which ends at vertex j, from line. */
-static void
-checkarc(struct qtreader *r, size_t i, size_t j, long line)
-{
-	const struct ring *g = &r->ring;
-	const char *why = arc_defect(g->v[i], g->mid[i], g->v[j], "a record");
-
-	if (why != NULL)
-		errat(r->name, line, "%s", why);
-}
-
-/*
- * A v or a record of the ring being read; the last one completes it.  An
- * a record gives a point on the arc from the vertex before it to the one
- * after it, the first vertex after the last.  A ring of at least 3
- * records that starts with a v and has no two a in a row has at least two
- * vertices, and an arc when it has only two.
- */
-static int
-vrec(struct qtreader *r, int isa)
-{
-	struct ring *g = &r->ring;
-	double x, y;
-
-	nfields(r, 3, 3);
-	if (r->vleft == 0)
-		qt_fail(r, "%s record outside a ring", isa ? "a" : "v");
-	if (g->n == r->ringcap) {
-		r->ringcap = r->ringcap ? 2 * r->ringcap : 64;
-		g->v = xreallocarray(g->v, r->ringcap, sizeof(*g->v));
-		g->arc = xreallocarray(g->arc, r->ringcap, sizeof(*g->arc));
-		g->mid = xreallocarray(g->mid, r->ringcap, sizeof(*g->mid));
-	}
-	x = realfield(r, r->field[1], "x");
-	y = realfield(r, r->field[2], "y");
-	if (isa) {
-		if (!(r->flags & QT_ARCS))
-			qt_fail(r, "ring %ld has an arc (a record), which %s "
-			    "does not handle with these options", g->id,
-			    progname);
-		if (g->n == 0)
-			qt_fail(r, "ring %ld starts with an a record (a ring "
-			    "starts at a vertex)", g->id);
-		if (r->lasta)
-			qt_fail(r, "two a records in a row in ring %ld",
-			    g->id);
-		g->arc[g->n - 1] = 1;
-		g->mid[g->n - 1].x = x;
-		g->mid[g->n - 1].y = y;
-		g->narcs++;
-	} else {
-		g->v[g->n].x = x;
-		g->v[g->n].y = y;
-		g->arc[g->n] = 0;
-		g->n++;
-		if (r->lasta)
-			checkarc(r, g->n - 2, g->n - 1, r->lineno - 1);
-	}
-	r->lasta = isa;
-	if (--r->vleft > 0)
-		return 0;
-	if (isa)
-		checkarc(r, g->n - 1, 0, r->lineno);
-	return 1;
-}
-
-static void
 vertexrec(struct qtreader *r, struct qtrec *rec)
 {
 	struct meshvertex *v = &rec->vertex;
 
-	nfields(r, 4, 4);
+	read_nfields(r, 4, 4);
 	if (!r->haveuniverse)
 		qt_fail(r, "vertex record before the universe record");
-	v->id = intfield(r, r->field[1], "vertex id", 1, LLONG_MAX);
+	v->id = read_intfield(r, r->field[1], "vertex id", 1, LLONG_MAX);
 	if (v->id != r->nvertex + 1)
 		qt_fail(r, "vertex %s follows vertex %llu", r->field[1],
 		    r->nvertex);
-	v->p.x = realfield(r, r->field[2], "x");
-	v->p.y = realfield(r, r->field[3], "y");
+	v->p.x = read_realfield(r, r->field[2], "x");
+	v->p.y = read_realfield(r, r->field[3], "y");
 	if (v->p.x < r->u.x0 || v->p.x - r->u.x0 > r->u.size ||
 	    v->p.y < r->u.y0 || v->p.y - r->u.y0 > r->u.size)
 		qt_fail(r, "vertex %s lies outside the universe", r->field[1]);
@@ -770,7 +548,7 @@ elemrec(struct qtreader *r, struct qtrec *rec)
 	if (r->nfield < 6)
 		qt_fail(r, "elem record has %d fields, expected at least 6",
 		    r->nfield);
-	e->id = intfield(r, r->field[1], "element id", 1, LLONG_MAX);
+	e->id = read_intfield(r, r->field[1], "element id", 1, LLONG_MAX);
 	if (e->id != r->nelem + 1)
 		qt_fail(r, "elem %s follows elem %llu", r->field[1], r->nelem);
 	type = r->field[2];
@@ -784,8 +562,8 @@ elemrec(struct qtreader *r, struct qtrec *rec)
 		qt_fail(r, "%s element has %d vertices, expected %d", type,
 		    r->nfield - 3, want);
 	for (i = 3; i < r->nfield; i++) {
-		unsigned long long v = intfield(r, r->field[i], "vertex id", 1,
-		    LLONG_MAX);
+		unsigned long long v = read_intfield(r, r->field[i],
+		    "vertex id", 1, LLONG_MAX);
 
 		if (v > r->nvertex)
 			qt_fail(r, "elem %s refers to vertex %llu, which no "
@@ -896,15 +674,15 @@ body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 	split(r, line);
 	switch (rec->kind) {
 	case QT_UNIVERSE:
-		universerec(r, rec);
+		readhead_universe(r, rec);
 		break;
 	case QT_LEVEL:
-		levelrec(r, rec);
+		readhead_level(r, rec);
 		break;
 	case QT_RING:	/* a ring or a v record: the ring comes at its last v */
 		if (!isv)
-			ringrec(r);
-		else if (vrec(r, line[0] == 'a'))
+			readhead_ring(r);
+		else if (readhead_v(r, line[0] == 'a'))
 			break;
 		unsplit(r);
 		append(&r->ringtext, line, len);
@@ -921,10 +699,10 @@ body(struct qtreader *r, struct qtrec *rec, char *line, size_t len)
 		elemrec(r, rec);
 		break;
 	case QT_OBJECT:
-		objectrec(r, rec);
+		readhead_object(r, rec);
 		break;
 	case QT_OP:
-		oprec(r, rec);
+		readhead_op(r, rec);
 		break;
 	default:
 		break;
@@ -1157,3 +935,4 @@ qt_next(struct qtreader *r)
 	header(r, line);
 	return 1;
 }
+

@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "qtree.h"
-#include "internal.h"
+#include "celltext.h"
 
 /*
  * Cells take their texts from the cell text cache.  A mesh's vertices,
@@ -317,7 +317,7 @@ static void
 gridtext(struct gridtext *t, int axis, int level, uint64_t i, uint64_t key)
 {
 	t->key = key;
-	/* cellcoord's x0 + i h, its h computed once */
+	/* cell_coord's x0 + i h, its h computed once */
 	t->len = fmtreal(t->text, (axis ? w.cell->u.y0 : w.cell->u.x0) +
 	    (double)i * w.cell->size[level]) - t->text;
 }
@@ -469,7 +469,7 @@ qt_op(const struct qtop *op)
 		if (op->term[i] > 0)
 			p = fmtint(p, op->term[i]);
 		else {
-			const char *name = qt_opname(-op->term[i]);
+			const char *name = op_name(-op->term[i]);
 			size_t n = strlen(name);
 
 			memcpy(p, name, n);

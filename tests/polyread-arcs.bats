@@ -3,7 +3,7 @@
 # records, checked against the samples written by hand, and the checks of
 # arcs, each expected fault worked out by hand or by tests/oracle/arccheck.py
 # (crossing points in decimals to 60 digits, no code shared with
-# lib/arc.c or polyread).
+# lib/arc.c, lib/arccheck.c or polyread).
 
 load test_helper
 

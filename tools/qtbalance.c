@@ -293,7 +293,7 @@ need(int level, uint64_t ix, uint64_t iy, int dx, int dy)
 	uint64_t nx, ny;
 	int top;
 
-	if (!cellnext(level, ix, iy, dx, dy, &nx, &ny))
+	if (!cellset_next(level, ix, iy, dx, dy, &nx, &ny))
 		return;
 	top = cellset_above(t.nodes, level, nx, ny);
 	if (top < level)
@@ -430,7 +430,7 @@ main(int argc, char *argv[])
 	char path[QT_MAXLEVEL + 2];
 	int ch;
 
-	setprogname_(argv[0]);
+	xsetprogname(argv[0]);
 	while ((ch = getopt(argc, argv, "cvh")) != -1)
 		switch (ch) {
 		case 'c':

@@ -60,7 +60,7 @@ struct input {
 
 static struct input in[2];
 static int op, quiet;
-static unsigned seen;	/* -q: the result's classes, CLASSBIT bits */
+static unsigned seen;	/* -q: the result's classes, CELL_CLASSBIT bits */
 
 /* decides[side][class]: that class in that input gives the result alone */
 static char decides[2][3];
@@ -215,7 +215,7 @@ putleaf(int level, uint64_t ix, uint64_t iy, char class)
 	struct opennode *o = level > 0 ? &open[level - 1] : NULL;
 
 	if (quiet) {
-		seen |= CLASSBIT(class);
+		seen |= CELL_CLASSBIT(class);
 		return;
 	}
 	if (o != NULL && !o->written) {
@@ -406,11 +406,11 @@ main(int argc, char *argv[])
 	FILE *fp;
 	int ch, i;
 
-	setprogname_(argv[0]);
+	xsetprogname(argv[0]);
 	while ((ch = getopt(argc, argv, "o:qh")) != -1)
 		switch (ch) {
 		case 'o':
-			if ((op = qt_opcode(optarg)) == 0)
+			if ((op = op_code(optarg)) == 0)
 				die(2, "-o: unknown operation %s (and, or, "
 				    "minus, xor)", optarg);
 			break;
@@ -443,8 +443,8 @@ main(int argc, char *argv[])
 	for (i = 0; i < 2; i++)
 		qt_close(in[i].r);
 	if (quiet)
-		return seen & CLASSBIT('F') ? HASAREA :
-		    seen & CLASSBIT('P') ? UNDECIDED : EMPTY;
+		return seen & CELL_CLASSBIT('F') ? HASAREA :
+		    seen & CELL_CLASSBIT('P') ? UNDECIDED : EMPTY;
 	qt_end();
 	closeout();
 	return 0;

@@ -243,7 +243,7 @@ nextcell(struct input *p)
 		case QT_EOF:
 			if (!nextstream(p))
 				return 0;
-			if (cellcmp(&prev, &p->rec.c) > 0)
+			if (cell_cmp(&prev, &p->rec.c) > 0)
 				errat(p->name, p->rec.lineno, "cell %s comes "
 				    "before cell %s (line %ld) in preorder: "
 				    "an input's streams must follow each other "
@@ -523,7 +523,7 @@ blockcell(const char *s, size_t n, struct cell *c, char *path)
 		return -1;
 	memcpy(path, f[1], f[2] - 1 - f[1]);
 	path[f[2] - 1 - f[1]] = '\0';
-	if (pathcell(path, (int)level, &px, &py) < 0 ||
+	if (cell_frompath(path, (int)level, &px, &py) < 0 ||
 	    px != (uint64_t)ix || py != (uint64_t)iy)
 		return -1;
 	if (level == 0)
@@ -748,7 +748,7 @@ endtree(void)
 static int
 before(const struct input *a, const struct input *b)
 {
-	int d = cellcmp(&a->rec.c, &b->rec.c);
+	int d = cell_cmp(&a->rec.c, &b->rec.c);
 
 	return d < 0 || (d == 0 && a < b);
 }
@@ -790,7 +790,7 @@ merge(void)
 			q = n > 1 ? h[1] : NULL;
 			if (n > 2 && before(h[2], h[1]))
 				q = h[2];
-			if (q != NULL && cellcmp(&q->rec.c, &p->b->last) <= 0) {
+			if (q != NULL && cell_cmp(&q->rec.c, &p->b->last) <= 0) {
 				unblock(p);
 				if (p->done)
 					h[0] = h[--n];
@@ -844,7 +844,7 @@ heldcmp(const void *va, const void *vb)
 	cb.level = b->level;
 	cb.ix = b->ix;
 	cb.iy = b->iy;
-	if ((d = cellcmp(&ca, &cb)) != 0)
+	if ((d = cell_cmp(&ca, &cb)) != 0)
 		return d;
 	if (a->input != b->input)
 		return a->input < b->input ? -1 : 1;
@@ -889,7 +889,7 @@ main(int argc, char *argv[])
 	size_t j;
 	int ch, i, nstdin = 0;
 
-	setprogname_(argv[0]);
+	xsetprogname(argv[0]);
 	while ((ch = getopt(argc, argv, "cuh")) != -1)
 		switch (ch) {
 		case 'c':

@@ -50,12 +50,12 @@ meshleaf(const struct cell *c, int kept, unsigned long long id)
 	unsigned long long v[4];
 	static unsigned long long numbered;	/* vertices so far */
 
-	corners_at(corners, x, y);
+	corner_at(corners, x, y);
 	if (!kept)
 		return;
 	for (k = 0; k < 4; k++) {
 		/* numbered in order of first use: a new one is the next */
-		v[k] = corners_id(corners, x + dx[k] * s, y + dy[k] * s);
+		v[k] = corner_id(corners, x + dx[k] * s, y + dy[k] * s);
 		if (v[k] > numbered) {
 			numbered = v[k];
 			qt_cornervertex(v[k], c->level, c->ix + dx[k],
@@ -77,7 +77,7 @@ struct shape {
 static int
 clockwise(const struct point *v, size_t n)
 {
-	return loop_sign(v, n) < 0;
+	return area_loopsign(v, n) < 0;
 }
 
 static void
@@ -129,7 +129,7 @@ putmulti(enum format format, const struct shape *sh)
 			const struct point *h = sh->v + off[j];
 
 			if (clockwise(h, sh->len[j]) &&
-			    ring_contains(v, sh->len[i], h[0], h[1]))
+			    geom_ringcontains(v, sh->len[i], h[0], h[1]))
 				putloop(format, h, sh->len[j], 0);
 		}
 		printf(format == WKT ? ")" : "]");
@@ -195,7 +195,7 @@ parseformat(const char *arg)
 
 struct options {
 	enum format	 format;
-	unsigned	 keep;		/* CLASSBIT of the classes kept */
+	unsigned	 keep;		/* CELL_CLASSBIT of the classes kept */
 	int		 aflag, nflag, pflag, verbose;
 };
 
@@ -205,7 +205,7 @@ options(int argc, char *argv[], struct options *o)
 	int ch;
 
 	o->format = QTREE;
-	o->keep = CLASSBIT('F') | CLASSBIT('P');
+	o->keep = CELL_CLASSBIT('F') | CELL_CLASSBIT('P');
 	o->aflag = o->nflag = o->pflag = o->verbose = 0;
 	while ((ch = getopt(argc, argv, "ac:f:npvh")) != -1)
 		switch (ch) {
@@ -213,7 +213,7 @@ options(int argc, char *argv[], struct options *o)
 			o->aflag = 1;
 			break;
 		case 'c':
-			o->keep = optclasses(optarg);
+			o->keep = cell_optclasses(optarg);
 			break;
 		case 'f':
 			o->format = parseformat(optarg);
@@ -244,7 +244,7 @@ leaf(struct qtreader *r, const struct options *o, const struct universe *u,
     struct cell *c, unsigned long long *id)
 {
 	struct shape shape, *sh = NULL;
-	int kept = (o->keep & CLASSBIT(c->class)) != 0;
+	int kept = (o->keep & CELL_CLASSBIT(c->class)) != 0;
 	double frac = c->frac;
 	char class;
 
@@ -280,12 +280,12 @@ main(int argc, char *argv[])
 	struct universe u = { 0, 0, 1 };
 	struct options o;
 
-	setprogname_(argv[0]);
+	xsetprogname(argv[0]);
 	options(argc, argv, &o);
 	argc -= optind;
 	argv += optind;
 	if (o.nflag)
-		corners = corners_new(0);
+		corners = corner_new(0);
 
 	/* Cut cells are clipped by straight edges only (lib/cut.c). */
 	r = qt_openpath(argc == 1 ? argv[0] : "-",

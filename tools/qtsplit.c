@@ -257,17 +257,17 @@ addringlevel(const char *arg)
 static void
 checklevels(void)
 {
-	int deepest = univdeepest(&in.u, NULL, 0);
+	int deepest = cell_univdeepest(&in.u, NULL, 0);
 	size_t j;
 
 	if (opt.maxlevel < 0)
 		opt.maxlevel = in.level >= 0 ? in.level :
 		    deepest < 6 ? deepest : 6;
 	if (opt.maxlevel > deepest)
-		die(2, "-l: %s", univcheck(&in.u, opt.maxlevel));
+		die(2, "-l: %s", cell_univcheck(&in.u, opt.maxlevel));
 	for (j = 0; j < opt.nrl; j++)
 		if (opt.rl[j].level > deepest)
-			die(2, "-L: %s", univcheck(&in.u, opt.rl[j].level));
+			die(2, "-L: %s", cell_univcheck(&in.u, opt.rl[j].level));
 }
 
 /*
@@ -332,7 +332,7 @@ descend(const char *subtree, uint64_t *ix, uint64_t *iy, size_t *n,
 
 	if (strcmp(subtree, ".") == 0)
 		return 0;
-	if (depth > QT_MAXLEVEL || pathcell(subtree, depth, ix, iy) < 0)
+	if (depth > QT_MAXLEVEL || cell_frompath(subtree, depth, ix, iy) < 0)
 		die(2, "-r: not a cell path: %s", subtree);
 	for (i = 0; i < depth; i++) {
 		int parity[4], q = subtree[i] - '0';
@@ -407,7 +407,7 @@ main(int argc, char *argv[])
 	size_t n;
 	int ch, inside, level;
 
-	setprogname_(argv[0]);
+	xsetprogname(argv[0]);
 	while ((ch = getopt(argc, argv, "L:l:m:r:s:t:vh")) != -1)
 		switch (ch) {
 		case 'L':

@@ -163,7 +163,7 @@ addperim(double len)
 static void
 edge(struct point a, struct point b)
 {
-	mo_edge(&poly.ring, a, b);
+	area_moedge(&poly.ring, a, b);
 	addperim(hypot(b.x - a.x, b.y - a.y));
 }
 
@@ -176,9 +176,9 @@ endring(int hole)
 {
 	int want = hole ? -1 : 1, sign;
 
-	sign = xs_sign(&poly.ring.a2);
-	mo_addmo(&poly.region, &poly.ring, sign == want || sign == 0 ? 1 : -1);
-	mo_zero(&poly.ring);
+	sign = area_sign(&poly.ring.a2);
+	area_moadd(&poly.region, &poly.ring, sign == want || sign == 0 ? 1 : -1);
+	area_mozero(&poly.ring);
 }
 
 /*
@@ -198,10 +198,10 @@ arcedge(struct point a, struct point m, struct point b)
 		die(1, "arc through three points on a line");	/* read.c */
 	arc_measures(&c, &g);
 	s = -c.sd * g.area;
-	mo_edge(&poly.ring, a, b);
-	xs_add(&poly.ring.a2, 2 * s);
-	xs_add(&poly.ring.mx, 6 * s * g.gx);
-	xs_add(&poly.ring.my, 6 * s * g.gy);
+	area_moedge(&poly.ring, a, b);
+	area_add(&poly.ring.a2, 2 * s);
+	area_add(&poly.ring.mx, 6 * s * g.gx);
+	area_add(&poly.ring.my, 6 * s * g.gy);
 	addperim(g.len);
 }
 
@@ -413,7 +413,7 @@ jumpleaf(const char *path, int level)
 	int d, k = 0;
 
 	if (path != NULL)
-		k = pathprefix(path, level, jump.lastpath, jump.lastlen);
+		k = cell_pathprefix(path, level, jump.lastpath, jump.lastlen);
 	/* the reader saw to it that path follows jump.lastpath in preorder */
 	for (d = jump.lastlen - 1; d >= k && d >= 0; d--)
 		if (d > k || path == NULL)
@@ -446,7 +446,7 @@ sumcell(const struct cell *c)
 
 	if (sums.haveopen && (c == NULL || c->level <= o->level ||
 	    (o->level > 0 &&
-	    pathprefix(c->path, c->level, o->path, o->level) < o->level))) {
+	    cell_pathprefix(c->path, c->level, o->path, o->level) < o->level))) {
 		sums.dangling = xgrow(sums.dangling, &sums.cap,
 		    sums.ndangling + 1, sizeof(*sums.dangling));
 		sums.dangling[sums.ndangling++] = *o;
@@ -754,7 +754,7 @@ leafarea(struct xsum *s, int withpartial, int cut)
 			n += tree.lev[l].leaves[P] +
 			    (l == cut ? tree.lev[l].nodes : 0);
 		if (n > 0)
-			xs_addprod3(s, ldexp((double)n, -2 * l), tree.u.size,
+			area_addprod3(s, ldexp((double)n, -2 * l), tree.u.size,
 			    tree.u.size);
 	}
 }
@@ -771,9 +771,9 @@ leafcentroid(double *cx, double *cy, int withpartial, int cut)
 	double sw;
 	int l;
 
-	xs_init(&w);
-	xs_init(&mx);
-	xs_init(&my);
+	area_init(&w);
+	area_init(&mx);
+	area_init(&my);
 	for (l = 0; l <= cut; l++) {
 		const struct levelstat *s = &tree.lev[l];
 		double n = (double)s->leaves[F];
@@ -789,16 +789,16 @@ leafcentroid(double *cx, double *cy, int withpartial, int cut)
 			sx += u128real(&s->nodesx);
 			sy += u128real(&s->nodesy);
 		}
-		xs_add(&w, ldexp(n, -2 * l));
-		xs_add(&mx, ldexp(sx, -3 * l - 1));
-		xs_add(&my, ldexp(sy, -3 * l - 1));
+		area_add(&w, ldexp(n, -2 * l));
+		area_add(&mx, ldexp(sx, -3 * l - 1));
+		area_add(&my, ldexp(sy, -3 * l - 1));
 	}
-	sw = xs_round(&w);
-	*cx = tree.u.x0 + tree.u.size * (xs_round(&mx) / sw);
-	*cy = tree.u.y0 + tree.u.size * (xs_round(&my) / sw);
-	xs_free(&w);
-	xs_free(&mx);
-	xs_free(&my);
+	sw = area_round(&w);
+	*cx = tree.u.x0 + tree.u.size * (area_round(&mx) / sw);
+	*cy = tree.u.y0 + tree.u.size * (area_round(&my) / sw);
+	area_free(&w);
+	area_free(&mx);
+	area_free(&my);
 }
 
 /* |approximation - polygon| / polygon, the difference taken exactly. */
@@ -808,11 +808,11 @@ relerr(const struct xsum *approx, double area)
 	struct xsum d;
 	double v;
 
-	xs_init(&d);
-	xs_addxs(&d, approx, 1);
-	xs_addxs(&d, &poly.region.a2, -0.5);
-	v = fabs(xs_round(&d)) / area;
-	xs_free(&d);
+	area_init(&d);
+	area_addsum(&d, approx, 1);
+	area_addsum(&d, &poly.region.a2, -0.5);
+	v = fabs(area_round(&d)) / area;
+	area_free(&d);
 	return v;
 }
 
@@ -845,7 +845,7 @@ polygonfigures(void)
 		return 0;
 	}
 	if (poly.nrings > 0) {
-		mo_result(&poly.region, &area, &cx, &cy);
+		area_moresult(&poly.region, &area, &cx, &cy);
 		putreal("polygon_area", area);
 		putreal("perimeter", poly.perim + poly.perimlow);
 		putreal("centroid_x", cx);
@@ -889,12 +889,12 @@ cutfigures(struct cutfigures *f, double area, int cut)
 {
 	struct xsum full, fullpart;
 
-	xs_init(&full);
-	xs_init(&fullpart);
+	area_init(&full);
+	area_init(&fullpart);
 	leafarea(&full, 0, cut);
 	leafarea(&fullpart, 1, cut);
-	f->af = xs_round(&full);
-	f->afp = xs_round(&fullpart);
+	f->af = area_round(&full);
+	f->afp = area_round(&fullpart);
 	f->haveerr = area > 0;
 	if (f->haveerr) {
 		f->erf = relerr(&full, area);
@@ -904,8 +904,8 @@ cutfigures(struct cutfigures *f, double area, int cut)
 		leafcentroid(&f->cfx, &f->cfy, 0, cut);
 	if (f->afp > 0)
 		leafcentroid(&f->cfpx, &f->cfpy, 1, cut);
-	xs_free(&full);
-	xs_free(&fullpart);
+	area_free(&full);
+	area_free(&fullpart);
 }
 
 static void
@@ -930,7 +930,7 @@ leafareafigures(double area, unsigned long long leaves)
 	}
 	/* with qtleaves -a: the region's area from the cut cells */
 	if (tree.ncut > 0 && tree.ncut == leaves) {
-		putreal("area_cut", xs_round(&tree.cut));
+		putreal("area_cut", area_round(&tree.cut));
 		if (f.haveerr)
 			putreal("area_cut_relerr", relerr(&tree.cut, area));
 	}
@@ -1103,7 +1103,7 @@ report(int table)
 
 	if (tree.haveuniverse)
 		putcount("universe_deepest_level",
-		    univdeepest(&tree.u, NULL, 0));
+		    cell_univdeepest(&tree.u, NULL, 0));
 	cellfigures(area);
 	if (mesh.present)
 		meshfigures();
@@ -1257,7 +1257,7 @@ addxsum(struct xsum *x, char **f, int nf, const char *name, long lineno)
 	int i;
 
 	for (i = 0; i < nf; i++)
-		xs_add(x, getreal(f[i], name, lineno));
+		area_add(x, getreal(f[i], name, lineno));
 }
 
 static void
@@ -1289,7 +1289,7 @@ getnodeat(struct claim *c, char **f, int nf, int withclass,
 	    (withclass && (strchr("NFEP", f[4][0]) == NULL ||
 	    f[4][1] != '\0')) ||
 	    getu64(f[2], &n->ix) < 0 || getu64(f[3], &n->iy) < 0 ||
-	    pathcell(f[0], (int)lv, &ix, &iy) < 0 ||
+	    cell_frompath(f[0], (int)lv, &ix, &iy) < 0 ||
 	    ix != n->ix || iy != n->iy)
 		errat(name, lineno, "a bad cell: %s %s", f[0],
 		    nf > 1 ? f[1] : "");
@@ -1527,7 +1527,7 @@ claimcmp(const void *va, const void *vb)
 	cb.level = b->n.level;
 	cb.ix = b->n.ix;
 	cb.iy = b->n.iy;
-	if ((d = cellcmp(&ca, &cb)) != 0)
+	if ((d = cell_cmp(&ca, &cb)) != 0)
 		return d;
 	return (a->part > b->part) - (a->part < b->part);
 }
@@ -1639,7 +1639,7 @@ main(int argc, char *argv[])
 	struct qtreader *r;
 	int ch, i, table = 0, verbose = 0;
 
-	setprogname_(argv[0]);
+	xsetprogname(argv[0]);
 	while ((ch = getopt(argc, argv, "lmsvh")) != -1)
 		switch (ch) {
 		case 'l':
@@ -1662,9 +1662,9 @@ main(int argc, char *argv[])
 	if ((argc > 1 && !merged) || (merged && (sums.on || verbose)))
 		usage(0);
 
-	mo_init(&poly.region);
-	mo_init(&poly.ring);
-	xs_init(&tree.cut);
+	area_moinit(&poly.region);
+	area_moinit(&poly.ring);
+	area_init(&tree.cut);
 	if (merged) {
 		for (i = 0; i < argc || (argc == 0 && i == 0); i++)
 			mergeinput(argc > 0 ? argv[i] : "-");

@@ -7,7 +7,7 @@
  * The first form checks a fixed set of hard cases (every power of two and
  * its neighbours, every power of ten, the ends of the subnormal and normal
  * ranges), then count random bit patterns (NaN and Inf skipped) and count
- * cell corners x0 + i * ldexp(size, -level) as cellcoord makes them, and
+ * cell corners x0 + i * ldexp(size, -level) as cell_coord makes them, and
  * count decimals of up to 17 digits and their neighbours.  Each
  * mismatch is printed; the last line is "fmtcheck: N passed, M failed".
  * The second form prints fmtreal of each number (strtod syntax, so hex
@@ -241,7 +241,7 @@ cellcoords(unsigned long n)
 		double x0 = coordinate(0), size = coordinate(1);
 		int level = (int)rndupto(QT_MAXLEVEL);
 
-		check(cellcoord(x0, size, level,
+		check(cell_coord(x0, size, level,
 		    rndupto((uint64_t)1 << level)));
 	}
 }

@@ -1,5 +1,5 @@
 /*
- * rangecheck: checks the range rule of qtree(5), lib/cell.c's univdeepest.
+ * rangecheck: checks the range rule of qtree(5), lib/cell.c's cell_univdeepest.
  *
  *	rangecheck count [seed]
  *
@@ -13,8 +13,8 @@
  * Then the library on doubles: count universes made to sit across binade
  * boundaries (where ties round corners together), across zero near
  * 1e-100, and at random, with deepest levels mostly low enough to list
- * every corner.  At univdeepest's level, on each axis, the corners
- * x0 + i h (computed here, not by cellcoord) must rise strictly and be 0
+ * every corner.  At cell_univdeepest's level, on each axis, the corners
+ * x0 + i h (computed here, not by cell_coord) must rise strictly and be 0
  * or of magnitude 1e-100 to 1e100, and h too: all of them up to 2^20
  * corners, else windows of them around binade boundaries, zero and random
  * places.  A universe with a value out of range must get -1.
@@ -257,7 +257,7 @@ check(double x0, double y0, double size)
 {
 	struct universe u = { x0, y0, size };
 	char why[160];
-	int d = univdeepest(&u, why, sizeof(why)), bad;
+	int d = cell_univdeepest(&u, why, sizeof(why)), bad;
 	uint64_t at = 0;
 
 	bad = !inrange(x0) || !inrange(y0) || !inrange(size) ||

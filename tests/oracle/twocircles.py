@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # twocircles.py: where the circles of two arcs meet, worked out apart from
-# lib/arc.c, for tests/polyread-arcs.bats.
+# lib/arccheck.c, for tests/polyread-arcs.bats.
 #
 #   python3 tests/oracle/twocircles.py AX AY MX MY BX BY  AX AY MX MY BX BY
 #

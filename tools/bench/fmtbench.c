@@ -100,7 +100,7 @@ main(int argc, char *argv[])
 		const struct universe *w = &u[rnd() % 4];
 		int level = 1 + rnd() % 24;
 
-		v[i] = cellcoord(i & 1 ? w->y0 : w->x0, w->size, level,
+		v[i] = cell_coord(i & 1 ? w->y0 : w->x0, w->size, level,
 		    rnd() % ((uint64_t)1 << level));
 	}
 	tnew = timeit(fmtreal, v, n, runs, &sumnew);

@@ -12,7 +12,7 @@
  * POW5MIN is the least q for which a 19-digit decimal w 10^q can be a
  * double (see lib/parse.c); POW5MAX the greatest power of ten that
  * fmtreal scales by (10^-k for the least binary exponent q, k =
- * floor(q log10 2), and one more digit).  lib/internal.h has both.
+ * floor(q log10 2), and one more digit).  lib/num.h has both.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -161,10 +161,10 @@ main(void)
 	    "#include <stdint.h>\n"
 	    "\n"
 	    "#include \"qtree.h\"\n"
-	    "#include \"internal.h\"\n"
+	    "#include \"num.h\"\n"
 	    "\n"
 	    "#if POW5MIN != %d || POW5MAX != %d\n"
-	    "#error \"lib/internal.h and tools/gen/genpow5.c disagree\"\n"
+	    "#error \"lib/num.h and tools/gen/genpow5.c disagree\"\n"
 	    "#endif\n"
 	    "\n"
 	    "const struct pow5 pow5tab[POW5MAX - POW5MIN + 1] = {\n",

@@ -110,8 +110,8 @@ rootpoint(const struct arc *a, struct point p, struct point q, int j)
 {
 	struct arcmeasures g;
 	double dx = q.x - p.x, dy = q.y - p.y, dd = dx * dx + dy * dy;
-	double tv = ((a->cx - p.x) * dx + (a->cy - p.y) * dy) / dd;
-	double ex = p.x + tv * dx - a->cx, ey = p.y + tv * dy - a->cy, h;
+	double tv = ((a->f.cx - p.x) * dx + (a->f.cy - p.y) * dy) / dd;
+	double ex = p.x + tv * dx - a->f.cx, ey = p.y + tv * dy - a->f.cy, h;
 	struct point z;
 
 	arc_measures(a, &g);
@@ -128,7 +128,7 @@ segarc(struct point p, struct point q, const struct arc *a,
 {
 	int f0 = arc_power(a, p.x, p.y), f1 = arc_power(a, q.x, q.y);
 	int ts0 = arc_dotcentre(a, p, q), ts1 = -arc_dotcentre(a, q, p);
-	int kd = crossdir(a->a, a->b, p, q), op = orient(a->a, a->b, p);
+	int kd = arc_crossdir(a->a, a->b, p, q), op = orient(a->a, a->b, p);
 	int gsx = 1, tsx = 0, r0[2], r1[2], rx[2], n = 0, j, twin, lp;
 	struct point at = a->a;
 
@@ -223,12 +223,12 @@ static struct point
 commonpoint(const struct arc *a1, const struct arc *a2, double d, double u,
     double h2, int s)
 {
-	double dx = a2->cx - a1->cx, dy = a2->cy - a1->cy;
+	double dx = a2->f.cx - a1->f.cx, dy = a2->f.cy - a1->f.cy;
 	double h = s * sqrt(fmax(h2, 0));
 	struct point x;
 
-	x.x = a1->cx + (u * dx - h * dy) / d;
-	x.y = a1->cy + (u * dy + h * dx) / d;
+	x.x = a1->f.cx + (u * dx - h * dy) / d;
+	x.y = a1->f.cy + (u * dy + h * dx) / d;
 	return x;
 }
 
@@ -241,9 +241,9 @@ static int
 arcfilter(const struct arc *a1, const struct arc *a2, struct point *p)
 {
 	struct arcmeasures g1, g2;
-	double r1lo = sqrt(fmax(a1->tin, 0)), r1hi = sqrt(a1->tout);
-	double r2lo = sqrt(fmax(a2->tin, 0)), r2hi = sqrt(a2->tout);
-	double dx = a2->cx - a1->cx, dy = a2->cy - a1->cy, d = hypot(dx, dy);
+	double r1lo = sqrt(fmax(a1->f.tin, 0)), r1hi = sqrt(a1->f.tout);
+	double r2lo = sqrt(fmax(a2->f.tin, 0)), r2hi = sqrt(a2->f.tout);
+	double dx = a2->f.cx - a1->f.cx, dy = a2->f.cy - a1->f.cy, d = hypot(dx, dy);
 	double slack = 0x1p-40, r1, r2, u, h2, err;
 	int j, k, ok = 1;
 
@@ -261,7 +261,7 @@ arcfilter(const struct arc *a1, const struct arc *a2, struct point *p)
 	if (!(h2 > 1e-6 * r1 * r1))
 		return h2 < -1e-6 * r1 * r1 ? 1 : -1;
 	/* how far the common points may be off, from the centres' error */
-	err = 8 * (a1->ec + a2->ec + 0x1p-40 * (r1 + r2 + d)) *
+	err = 8 * (a1->f.ec + a2->f.ec + 0x1p-40 * (r1 + r2 + d)) *
 	    (1 + (r1 + r2) / sqrt(h2));
 	for (j = 0; j < 2; j++) {
 		struct point x = commonpoint(a1, a2, d, u, h2, j ? 1 : -1);
@@ -294,7 +294,7 @@ static int
 arcexact(const struct arc *a1, const struct arc *a2, struct meeting *m)
 {
 	struct arcmeasures g1, g2;
-	double dx = a2->cx - a1->cx, dy = a2->cy - a1->cy, d = hypot(dx, dy);
+	double dx = a2->f.cx - a1->f.cx, dy = a2->f.cy - a1->f.cy, d = hypot(dx, dy);
 	double u, h2;
 	int side[2][2], k = arc_circlesmeet(a1, a2, side), i, n = 0;
 
@@ -366,12 +366,12 @@ arcarc(const struct cedge *e, const struct cedge *f, struct meeting *m)
 			m[n].kind = CROSS;
 			/* W: v reflected in the line of the centres */
 			{
-				double dx = a2->cx - a1->cx, dy = a2->cy - a1->cy;
-				double t = ((v.x - a1->cx) * dx + (v.y - a1->cy) *
+				double dx = a2->f.cx - a1->f.cx, dy = a2->f.cy - a1->f.cy;
+				double t = ((v.x - a1->f.cx) * dx + (v.y - a1->f.cy) *
 				    dy) / (dx * dx + dy * dy);
 
-				m[n].p.x = 2 * (a1->cx + t * dx) - v.x;
-				m[n].p.y = 2 * (a1->cy + t * dy) - v.y;
+				m[n].p.x = 2 * (a1->f.cx + t * dx) - v.x;
+				m[n].p.y = 2 * (a1->f.cy + t * dy) - v.y;
 			}
 			n++;
 		}
@@ -478,7 +478,7 @@ onring(const struct inring *q, struct point p)
 int
 curvecontains(const struct inring *q, struct point p)
 {
-	int inside = ring_contains(q->v, q->n, p, p);
+	int inside = geom_ringcontains(q->v, q->n, p, p);
 	size_t i;
 
 	for (i = 0; i < q->n; i++)
@@ -506,7 +506,7 @@ against(const struct inring *r, const struct inring *q, int every)
 		    onring(q, p))
 			continue;
 		s = q->narcs > 0 ? curvecontains(q, p) :
-		    ring_contains(q->v, q->n, p, p);
+		    geom_ringcontains(q->v, q->n, p, p);
 		if (side >= 0 && s != side)
 			errat(r->file, r->firstline, "ring %ld crosses ring %ld "
 			    "where they touch", ringno(in, r), ringno(in, q));

@@ -80,7 +80,7 @@ parseuniverse(const char *arg, struct universe *u)
 	int i;
 
 	for (i = 0; i < 3; i++) {
-		if (parsereal(p, &end, &v[i]) < 0 || !coordok(v[i]))
+		if (parsereal(p, &end, &v[i]) < 0 || !parsecoordok(v[i]))
 			die(2, "-u: expected x0,y0,size: %s", arg);
 		p = end;
 		if (i < 2 && *p++ != ',')
@@ -91,7 +91,7 @@ parseuniverse(const char *arg, struct universe *u)
 	u->x0 = v[0];
 	u->y0 = v[1];
 	u->size = v[2];
-	if ((msg = univcheck(u, -1)) != NULL)
+	if ((msg = cell_univcheck(u, -1)) != NULL)
 		die(2, "-u: %s", msg);
 }
 
@@ -135,7 +135,10 @@ check(struct input *in)
 		progress(1, "%llu vertices in %zu rings read", in->nvertices,
 		    in->nrings);
 	checkrings(in);
-	touches = checkedges(in, &ntouches);
+	if (hasarcs(in))
+		touches = checkcurves(in, &ntouches);
+	else
+		touches = checkedges(in, &ntouches);
 	if (verbose)
 		progress(1, "no two edges cross or overlap");
 	checknesting(in, touches, ntouches);
@@ -179,7 +182,7 @@ main(int argc, char *argv[])
 	long long level = -1;
 	int ch, i, haveoptu = 0, choosing = 0;
 
-	setprogname_(argv[0]);
+	xsetprogname(argv[0]);
 	while ((ch = getopt(argc, argv, "F:f:l:u:vh")) != -1)
 		switch (ch) {
 		case 'F':
@@ -219,20 +222,20 @@ main(int argc, char *argv[])
 		checkuniverse(&in, &u, "given with -u");
 	} else if (in.haveuniverse) {
 		u = in.universe;
-		if ((msg = univcheck(&u, -1)) != NULL)
+		if ((msg = cell_univcheck(&u, -1)) != NULL)
 			errat(in.universefile, 0, "%s", msg);
 		checkuniverse(&in, &u, "given in the input");
 	} else {
 		defaultuniverse(&in, &u);
-		if ((msg = univcheck(&u, -1)) != NULL)
+		if ((msg = cell_univcheck(&u, -1)) != NULL)
 			die(1, "%s (the rings' bounding square; -u gives "
 			    "another)", msg);
 	}
 	/* the level, -l's or the input's, within the universe's reach */
-	if (level >= 0 && (msg = univcheck(&u, level)) != NULL)
+	if (level >= 0 && (msg = cell_univcheck(&u, level)) != NULL)
 		die(2, "-l: %s", msg);
 	if (level < 0 && in.level >= 0 &&
-	    (msg = univcheck(&u, in.level)) != NULL)
+	    (msg = cell_univcheck(&u, in.level)) != NULL)
 		errat(in.levelfile, 0, "%s", msg);
 	if (level < 0)
 		level = in.level;

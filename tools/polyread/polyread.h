@@ -123,13 +123,18 @@ void	 parsegeojson(struct src *, struct input *);
 void	 choosefeature(const char *);
 
 /*
- * valid.c: each ring alone, roles and connectivity, universe, orientation;
- * pairfail fails on edge i of one ring and edge j of another (counted from
- * 0), which cross, overlap or touch at a point.
+ * touch.c: addtouch records that two rings touch at a point, taketouches
+ * hands the points over and starts the list anew; ringno numbers a ring
+ * from 1, and pairfail fails on edge i of one ring and edge j of another
+ * (counted from 0), which cross, overlap or touch at a point.
  */
+void	 addtouch(long, long, struct point);
+struct touch *taketouches(size_t *);
 long	 ringno(const struct input *, const struct inring *);
 void	 pairfail(const struct input *, size_t, size_t, size_t, size_t,
 	    const char *, struct point);
+
+/* valid.c: each ring alone, roles and connectivity, universe, orientation */
 void	 checkrings(struct input *);
 void	 checknesting(const struct input *, const struct touch *, size_t);
 void	 defaultuniverse(const struct input *, struct universe *);
@@ -138,13 +143,10 @@ void	 checkuniverse(const struct input *, const struct universe *,
 void	 orientrings(struct input *);
 
 /*
- * sweep.c: no two edges cross or overlap; where rings touch; nesting.
- * addtouch records that two rings touch at a point, taketouches hands the
- * points over.
+ * sweep.c: for inputs without arcs, no two edges cross or overlap; where
+ * rings touch; nesting.
  */
 struct touch *checkedges(struct input *, size_t *);
-void	 addtouch(long, long, struct point);
-struct touch *taketouches(size_t *);
 
 /*
  * curve.c: the same for inputs with arcs, by pairs of edges whose boxes

@@ -74,13 +74,13 @@ readall(struct src *s, const char *path)
 	    st.st_size > 0 && (uintmax_t)st.st_size < SIZE_MAX / 2)
 		cap = (size_t)st.st_size + 2;
 	s->buf = xmalloc(cap);
-	hugepages(s->buf, cap);	/* read into once: 2 MB faults, not 4 KB */
+	hugepage_hint(s->buf, cap);	/* read into once: 2 MB faults, not 4 KB */
 	s->len = 0;
 	for (;;) {
 		if (cap - s->len - 1 == 0) {
 			cap *= 2;
 			s->buf = xreallocarray(s->buf, cap, 1);
-			hugepages(s->buf, cap);
+			hugepage_hint(s->buf, cap);
 		}
 		n = cap - s->len - 1;
 		if ((n = fread(s->buf + s->len, 1, n < LINEMAX ? n : LINEMAX,
@@ -305,14 +305,14 @@ addvertex(struct input *in, struct inring *r, double x, double y, long line)
 {
 	if (isnan(x) || isnan(y) || isinf(x) || isinf(y))
 		readerr(r->file, line, "coordinate is not a finite number");
-	if (!coordok(x) || !coordok(y))
+	if (!parsecoordok(x) || !parsecoordok(y))
 		readerr(r->file, line, "coordinate outside the supported range "
 		    "(0, or 1e-100 to 1e100 in magnitude)");
 	if (r->n == r->cap) {
 		r->cap = r->cap ? 2 * r->cap : 4;
 		r->v = xreallocarray(r->v, r->cap, sizeof(*r->v));
 		r->line = xreallocarray(r->line, r->cap, sizeof(*r->line));
-		hugepages(r->v, r->cap * sizeof(*r->v));	/* the sweep's */
+		hugepage_hint(r->v, r->cap * sizeof(*r->v));	/* the sweep's */
 	}
 	r->v[r->n].x = x;
 	r->v[r->n].y = y;
@@ -331,7 +331,7 @@ addarc(struct input *in, struct inring *r, double x, double y, long line)
 	(void)in;
 	if (isnan(x) || isnan(y) || isinf(x) || isinf(y))
 		readerr(r->file, line, "coordinate is not a finite number");
-	if (!coordok(x) || !coordok(y))
+	if (!parsecoordok(x) || !parsecoordok(y))
 		readerr(r->file, line, "coordinate outside the supported range "
 		    "(0, or 1e-100 to 1e100 in magnitude)");
 	if (r->n == 0)

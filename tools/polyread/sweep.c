@@ -51,8 +51,6 @@ static unsigned char *ccw;		/* each ring's orientation, once met */
 static size_t *first;			/* each ring's first edge */
 static struct edge *edges;
 static uint32_t root, bottom;
-static struct touch *touches;
-static size_t ntouches, touchcap;
 
 /* An edge's ends in ring order: end 0 is its vertex, end 1 the next. */
 static struct point
@@ -74,30 +72,6 @@ edgefail(uint32_t ke, uint32_t kf, const char *what, struct point p)
 {
 	pairfail(in, edges[ke].ring, edgeno(ke), edges[kf].ring, edgeno(kf),
 	    what, p);
-}
-
-void
-addtouch(long a, long b, struct point p)
-{
-	if (ntouches == touchcap) {
-		touchcap = touchcap ? 2 * touchcap : 64;
-		touches = xreallocarray(touches, touchcap, sizeof(*touches));
-	}
-	touches[ntouches].ring[0] = a < b ? a : b;
-	touches[ntouches].ring[1] = a < b ? b : a;
-	touches[ntouches++].p = p;
-}
-
-/* The touches recorded, for the caller to free; the list starts anew. */
-struct touch *
-taketouches(size_t *n)
-{
-	struct touch *t = touches;
-
-	*n = ntouches;
-	touches = NULL;
-	ntouches = touchcap = 0;
-	return t;
 }
 
 static int
@@ -825,8 +799,6 @@ checkedges(struct input *input, size_t *ntouch)
 {
 	size_t i, j, n = 0;
 
-	if (hasarcs(input))
-		return checkcurves(input, ntouch);
 	in = input;
 	rings = input->rings;
 	first = xreallocarray(NULL, in->nrings + 1, sizeof(*first));
@@ -840,7 +812,7 @@ checkedges(struct input *input, size_t *ntouch)
 	if (n >= NONE)
 		die(1, "more than %lu vertices", (unsigned long)NONE - 1);
 	edges = xreallocarray(NULL, n + 1, sizeof(*edges));
-	hugepages(edges, (n + 1) * sizeof(*edges));	/* probed at random */
+	hugepage_hint(edges, (n + 1) * sizeof(*edges));	/* probed at random */
 	n = 0;
 	for (i = 0; i < in->nrings; i++)
 		for (j = 0; j < rings[i].n; j++) {

@@ -98,14 +98,14 @@ extreme(const struct arc *a, int side, double reached, double clear)
 	if (!beyond(a, side, reached))
 		return reached;
 	/* only coordinates qtree(5) takes, 0 or of magnitude 1e-100 up */
-	if (!coordok(clear))
+	if (!parsecoordok(clear))
 		clear = copysign(QT_COORD_MIN, clear);
 	while (nextafter(reached, clear) != clear) {
 		double mid = reached / 2 + clear / 2;
 
 		if (mid == reached || mid == clear)
 			mid = nextafter(reached, clear);
-		if (!coordok(mid)) {
+		if (!parsecoordok(mid)) {
 			mid = reached != 0 && (reached < 0) != (clear < 0) ? 0 :
 			    copysign(QT_COORD_MIN, clear);
 			if (!(fmin(reached, clear) < mid &&
@@ -153,27 +153,6 @@ checkarcs(const struct input *in, struct inring *r)
 		a->xmin = box[0], a->ymin = box[1];
 		a->xmax = box[2], a->ymax = box[3];
 	}
-}
-
-/* Which rings they are, as people count them: from 1 in input order. */
-long
-ringno(const struct input *in, const struct inring *r)
-{
-	return (long)(r - in->rings) + 1;
-}
-
-void
-pairfail(const struct input *in, size_t ring1, size_t i, size_t ring2,
-    size_t j, const char *what, struct point p)
-{
-	const struct inring *r = &in->rings[ring1], *q = &in->rings[ring2];
-	char px[32], py[32];
-
-	fmtreal(px, p.x);
-	fmtreal(py, p.y);
-	errat(r->file, r->line[i], "ring %ld edge %zu (line %ld) %s ring %ld "
-	    "edge %zu (line %ld) at %s %s", ringno(in, r), i + 1, r->line[i],
-	    what, ringno(in, q), j + 1, q->line[j], px, py);
 }
 
 static void
@@ -393,7 +372,7 @@ checkseeds(const struct input *in)
 		for (j = 0; j < in->nrings; j++)
 			inside ^= in->rings[j].narcs > 0 ?
 			    curvecontains(&in->rings[j], sd->p) :
-			    ring_contains(in->rings[j].v, in->rings[j].n,
+			    geom_ringcontains(in->rings[j].v, in->rings[j].n,
 			    sd->p, sd->p);
 		if (inside)
 			errat(sd->file, sd->line, "hole point lies inside the "
@@ -499,21 +478,21 @@ curvesign(const struct input *in, const struct inring *r)
 	double segs = 0, size = 0, poly, total;
 	size_t i;
 
-	xs_init(&s);
+	area_init(&s);
 	for (i = 0; i < r->n; i++) {
 		struct point p = r->v[i], q = r->v[i + 1 < r->n ? i + 1 : 0];
 		struct arcmeasures g;
 
-		xs_addprod(&s, p.x, q.y);
-		xs_addprod(&s, -q.x, p.y);
+		area_addprod(&s, p.x, q.y);
+		area_addprod(&s, -q.x, p.y);
 		if (!r->arc[i])
 			continue;
 		arc_measures(&r->arcs[i], &g);
 		segs -= r->arcs[i].sd * 2 * g.area;
 		size += 2 * g.area;
 	}
-	poly = xs_round(&s);
-	xs_free(&s);
+	poly = area_round(&s);
+	area_free(&s);
 	total = poly + segs;
 	if (!(fabs(total) > 0x1p-40 * (fabs(poly) + size)))
 		errat(r->file, r->firstline, "ring %ld is too thin to tell "

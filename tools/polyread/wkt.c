@@ -106,17 +106,17 @@ ondiameter(struct point q, struct point s, struct point m)
 	struct xsum t;
 	int sign;
 
-	xs_init(&t);
-	xs_addprod(&t, q.x, q.x);
-	xs_addprod(&t, -q.x, s.x);
-	xs_addprod(&t, -q.x, m.x);
-	xs_addprod(&t, s.x, m.x);
-	xs_addprod(&t, q.y, q.y);
-	xs_addprod(&t, -q.y, s.y);
-	xs_addprod(&t, -q.y, m.y);
-	xs_addprod(&t, s.y, m.y);
-	sign = xs_sign(&t);
-	xs_free(&t);
+	area_init(&t);
+	area_addprod(&t, q.x, q.x);
+	area_addprod(&t, -q.x, s.x);
+	area_addprod(&t, -q.x, m.x);
+	area_addprod(&t, s.x, m.x);
+	area_addprod(&t, q.y, q.y);
+	area_addprod(&t, -q.y, s.y);
+	area_addprod(&t, -q.y, m.y);
+	area_addprod(&t, s.y, m.y);
+	sign = area_sign(&t);
+	area_free(&t);
 	return sign == 0;
 }
 
@@ -137,8 +137,8 @@ fullcircle(struct src *s, struct input *in, struct inring *r,
 	q1.y = ((a.y + m.y) + (a.x - m.x)) / 2;
 	q2.x = (a.x + m.x) - q1.x;
 	q2.y = (a.y + m.y) - q1.y;
-	if (!coordok(q1.x) || !coordok(q1.y) || !coordok(q2.x) ||
-	    !coordok(q2.y) || !ondiameter(q1, a, m) || !ondiameter(q2, a, m))
+	if (!parsecoordok(q1.x) || !parsecoordok(q1.y) || !parsecoordok(q2.x) ||
+	    !parsecoordok(q2.y) || !ondiameter(q1, a, m) || !ondiameter(q2, a, m))
 		readerr(s->name, mline, "full circle whose points a quarter "
 		    "turn from the two given are not doubles: give it as two "
 		    "arcs, five points");

@@ -33,10 +33,10 @@ blockclass(unsigned bits)
 {
 	if (bits == 0)
 		return -1;
-	if ((bits & CLASSBIT('P')) ||
-	    (bits & CLASSBIT('F') && bits & CLASSBIT('E')))
+	if ((bits & CELL_CLASSBIT('P')) ||
+	    (bits & CELL_CLASSBIT('F') && bits & CELL_CLASSBIT('E')))
 		return opt.drawn[CP] ? CP : CF;
-	return bits & CLASSBIT('F') ? CF : CE;
+	return bits & CELL_CLASSBIT('F') ? CF : CE;
 }
 
 /* With -b, whether a cell meets the window's interior. */
@@ -47,9 +47,9 @@ inwindow(const struct cell *c)
 
 	if (w->d >= 0)
 		return 1;
-	return cellcoord(pic.u.x0, pic.u.size, c->level, c->ix + 1) > w->x0 &&
+	return cell_coord(pic.u.x0, pic.u.size, c->level, c->ix + 1) > w->x0 &&
 	    c->x < w->x0 + w->w &&
-	    cellcoord(pic.u.y0, pic.u.size, c->level, c->iy + 1) > w->y0 &&
+	    cell_coord(pic.u.y0, pic.u.size, c->level, c->iy + 1) > w->y0 &&
 	    c->y < w->y0 + w->h;
 }
 
@@ -72,7 +72,7 @@ leaf(const struct cell *c)
 	if (c->id > 0)
 		pic.numbered = 1;
 	if (c->level >= pic.win.lb) {
-		block(c->level, c->ix, c->iy, CLASSBIT(c->class));
+		block(c->level, c->ix, c->iy, CELL_CLASSBIT(c->class));
 		return;
 	}
 	pic.sq = xgrow(pic.sq, &pic.sqcap, pic.nsq + 1, sizeof(*pic.sq));

@@ -108,14 +108,14 @@ writesvg(void)
 	outs("</svg>\n");
 }
 
-/* The classes to draw, from a set of CLASSBIT bits. */
+/* The classes to draw, from a set of CELL_CLASSBIT bits. */
 static void
 setdrawn(unsigned set)
 {
 	int k;
 
 	for (k = 0; k < NCLASS; k++)
-		opt.drawn[k] = (set & CLASSBIT(classletter[k])) != 0;
+		opt.drawn[k] = (set & CELL_CLASSBIT(classletter[k])) != 0;
 }
 
 static int
@@ -140,7 +140,7 @@ optwindow(const char *arg)
 	int i;
 
 	for (i = 0; i < 4; i++) {
-		if (parsereal(p, &end, &v[i]) < 0 || !coordok(v[i]) ||
+		if (parsereal(p, &end, &v[i]) < 0 || !parsecoordok(v[i]) ||
 		    *end != (i < 3 ? ',' : '\0'))
 			die(2, "-b: a window is four numbers x0,y0,x1,y1: %s",
 			    arg);
@@ -163,15 +163,15 @@ main(int argc, char *argv[])
 	enum qtkind kind;
 	int ch, verbose = 0;
 
-	setprogname_(argv[0]);
-	setdrawn(optclasses("FEP"));
+	xsetprogname(argv[0]);
+	setdrawn(cell_optclasses("FEP"));
 	while ((ch = getopt(argc, argv, "b:c:m:nNqvw:h")) != -1)
 		switch (ch) {
 		case 'b':
 			optwindow(optarg);
 			break;
 		case 'c':
-			setdrawn(optclasses(optarg));
+			setdrawn(cell_optclasses(optarg));
 			break;
 		case 'm':
 			opt.margin = pixels(ch, optarg, 0);

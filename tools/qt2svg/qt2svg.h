@@ -67,7 +67,7 @@ struct window {
 	int		 lb;		/* the grid's level, NOGRID for none */
 	uint64_t	 gx, gy;	/* its first column and row */
 	size_t		 gw, gh;
-	unsigned char	**rows;		/* CLASSBIT bits a block */
+	unsigned char	**rows;		/* CELL_CLASSBIT bits a block */
 };
 
 /* An arc of a ring, into the vertex it ends at: SVG's A command. */

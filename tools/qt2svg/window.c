@@ -120,7 +120,7 @@ refill(struct window *old)
 		s = &pic.sq[i];
 		if (s->level >= pic.win.lb)
 			block(s->level, s->ix, s->iy,
-			    CLASSBIT(classletter[s->k]));
+			    CELL_CLASSBIT(classletter[s->k]));
 		else
 			pic.sq[n++] = *s;
 	}
@@ -137,10 +137,10 @@ cellwindow(int d, uint64_t cx, uint64_t cy)
 	w->d = d;
 	w->cx = cx;
 	w->cy = cy;
-	w->x0 = cellcoord(pic.u.x0, pic.u.size, d, cx);
-	w->y0 = cellcoord(pic.u.y0, pic.u.size, d, cy);
-	w->x1 = cellcoord(pic.u.x0, pic.u.size, d, cx + 1);
-	w->y1 = cellcoord(pic.u.y0, pic.u.size, d, cy + 1);
+	w->x0 = cell_coord(pic.u.x0, pic.u.size, d, cx);
+	w->y0 = cell_coord(pic.u.y0, pic.u.size, d, cy);
+	w->x1 = cell_coord(pic.u.x0, pic.u.size, d, cx + 1);
+	w->y1 = cell_coord(pic.u.y0, pic.u.size, d, cy + 1);
 	w->w = w->h = ldexp(pic.u.size, -d);
 	w->scale = mapside() / w->w;
 	w->maph = mapside();
@@ -203,13 +203,13 @@ seecell(const struct cell *c)
 int
 cellbox(int level, uint64_t ix, uint64_t ix2, uint64_t iy, long long r[4])
 {
-	r[0] = clampll(pixelx(cellcoord(pic.u.x0, pic.u.size, level, ix)),
+	r[0] = clampll(pixelx(cell_coord(pic.u.x0, pic.u.size, level, ix)),
 	    pic.box[0], pic.box[2]);
-	r[1] = clampll(pixely(cellcoord(pic.u.y0, pic.u.size, level, iy + 1)),
+	r[1] = clampll(pixely(cell_coord(pic.u.y0, pic.u.size, level, iy + 1)),
 	    pic.box[1], pic.box[3]);
-	r[2] = clampll(pixelx(cellcoord(pic.u.x0, pic.u.size, level, ix2)),
+	r[2] = clampll(pixelx(cell_coord(pic.u.x0, pic.u.size, level, ix2)),
 	    pic.box[0], pic.box[2]);
-	r[3] = clampll(pixely(cellcoord(pic.u.y0, pic.u.size, level, iy)),
+	r[3] = clampll(pixely(cell_coord(pic.u.y0, pic.u.size, level, iy)),
 	    pic.box[1], pic.box[3]);
 	return r[2] > r[0] && r[3] > r[1];
 }

@@ -177,11 +177,11 @@ snapline(const struct mesh *m, struct point *p, int level)
 	double h = ldexp(m->u.size, -level), c, line;
 
 	c = round((p->x - m->u.x0) / h);
-	line = cellcoord(m->u.x0, m->u.size, level, (uint64_t)fmax(c, 0));
+	line = cell_coord(m->u.x0, m->u.size, level, (uint64_t)fmax(c, 0));
 	if (fabs(p->x - line) < 1e-9 * h)
 		p->x = line;
 	c = round((p->y - m->u.y0) / h);
-	line = cellcoord(m->u.y0, m->u.size, level, (uint64_t)fmax(c, 0));
+	line = cell_coord(m->u.y0, m->u.size, level, (uint64_t)fmax(c, 0));
 	if (fabs(p->y - line) < 1e-9 * h)
 		p->y = line;
 }
@@ -259,7 +259,7 @@ arcpoints(struct mesh *m, struct point a, struct point mid, struct point b,
 
 			if (c < 0 || ldexp(c, -level) > 1)
 				continue;
-			line = cellcoord(o, m->u.size, level, (uint64_t)c);
+			line = cell_coord(o, m->u.size, level, (uint64_t)c);
 			q = (line - cc) / r;
 			if (!(q > -1 && q < 1))
 				continue;

@@ -6,11 +6,11 @@
  * of the grid line it lies on, and each run of a loop along its cell's
  * side takes in the points of the index between its ends: its own and its
  * neighbours'.  The points compare exactly as doubles: corners are
- * cellcoord's, the same double at every level, and cut_loops computes
+ * cell_coord's, the same double at every level, and cut_loops computes
  * where a ring edge crosses a grid line from the edge and the line alone,
  * so that the cells on either side get the same double.  A full leaf that
  * takes in no point but hanging midpoints is meshed by the templates;
- * every other leaf is cut into triangles by ear_region.  The boundary is
+ * every other leaf is cut into triangles by earclip_region.  The boundary is
  * then checked against the rings (boundary.c), and with -t small pieces
  * joined (join.c).
  */
@@ -84,10 +84,10 @@ leafbox(const struct mesh *m, const struct leaf *l, double x[2], double y[2])
 {
 	const struct universe *u = &m->u;
 
-	x[0] = cellcoord(u->x0, u->size, l->level, l->ix);
-	x[1] = cellcoord(u->x0, u->size, l->level, l->ix + 1);
-	y[0] = cellcoord(u->y0, u->size, l->level, l->iy);
-	y[1] = cellcoord(u->y0, u->size, l->level, l->iy + 1);
+	x[0] = cell_coord(u->x0, u->size, l->level, l->ix);
+	x[1] = cell_coord(u->x0, u->size, l->level, l->ix + 1);
+	y[0] = cell_coord(u->y0, u->size, l->level, l->iy);
+	y[1] = cell_coord(u->y0, u->size, l->level, l->iy + 1);
 }
 
 static void
@@ -444,8 +444,8 @@ bfittemplate(struct mesh *m, const struct leaf *l, const double x[2],
 
 	if (l->level == QT_GRID)
 		return npoly == 4;
-	mx = cellcoord(m->u.x0, m->u.size, l->level + 1, 2 * l->ix + 1);
-	my = cellcoord(m->u.y0, m->u.size, l->level + 1, 2 * l->iy + 1);
+	mx = cell_coord(m->u.x0, m->u.size, l->level + 1, 2 * l->ix + 1);
+	my = cell_coord(m->u.y0, m->u.size, l->level + 1, 2 * l->iy + 1);
 	px[0] = px[6] = px[7] = x[0];
 	px[1] = px[5] = mx;
 	px[2] = px[3] = px[4] = x[1];
@@ -577,7 +577,7 @@ meshbfit(struct mesh *m, size_t i)
 		b->templated[i] = 1;
 		return;
 	}
-	ntri = b->nplen > 0 ? ear_region(b->ear, b->poly, b->plen, b->nplen,
+	ntri = b->nplen > 0 ? earclip_region(b->ear, b->poly, b->plen, b->nplen,
 	    &tri) : 0;
 	if (ntri == (size_t)-1)
 		errat(m->inname, l->lineno, "leaf %s: its part of the region "
@@ -605,7 +605,7 @@ bfitmesh(struct mesh *m)
 	size_t i;
 	int joining = m->tfrac > 0;
 
-	b->ear = ear_new();
+	b->ear = earclip_new();
 	bfitloops(m);
 	b->elstart = xreallocarray(NULL, m->nleaves + 1, sizeof(*b->elstart));
 	b->templated = xcalloc(m->nleaves + 1, 1);
@@ -620,7 +620,7 @@ bfitmesh(struct mesh *m)
 	checkboundary(m, m->format != QTREE && !joining);
 	if (joining)
 		jointiny(m);
-	ear_free(b->ear);
+	earclip_free(b->ear);
 	cut_free(b->cutter);
 	if (m->format != QTREE && joining)
 		bfitboundary(m);

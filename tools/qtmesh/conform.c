@@ -163,8 +163,8 @@ pendput(struct grid *g, uint64_t x, uint64_t y, uint32_t h)
 static uint32_t
 vertex(struct grid *g, uint64_t x, uint64_t y)
 {
-	size_t before = g->npend > 0 ? corners_count(g->vt) : 0, k;
-	uint32_t id = corners_id(g->vt, x, y);
+	size_t before = g->npend > 0 ? corner_count(g->vt) : 0, k;
+	uint32_t id = corner_id(g->vt, x, y);
 
 	if (g->npend > 0 && id > before) {
 		k = pendslot(g, x, y);
@@ -228,7 +228,7 @@ addhang(struct grid *g, const uint64_t *px, const uint64_t *py,
 	int mid = 2 * k + 1, b = (2 * k + 2) % 8;
 	struct hang *hg;
 
-	id[mid] = corners_find(g->vt, px[mid], py[mid]);
+	id[mid] = corner_find(g->vt, px[mid], py[mid]);
 	g->hangs = xgrow(g->hangs, &g->hangcap, g->nhangs + 1,
 	    sizeof(*g->hangs));
 	hg = &g->hangs[g->nhangs++];
@@ -252,7 +252,7 @@ meshleaf(struct mesh *m, struct leaf *l)
 	int segs = m->format == MSH || m->format == TRIANGLE;
 
 	leafpoints(l, px, py);
-	corners_at(m->g.vt, px[0], py[0]);
+	corner_at(m->g.vt, px[0], py[0]);
 	/* every template uses the four corners: addelem numbers them */
 	for (i = 0; i < m->bymask[mask].nel; i++)
 		addelem(m, px, py, &m->bymask[mask].el[i], id, l);
@@ -301,9 +301,9 @@ gridmesh(struct mesh *m)
 {
 	size_t i;
 
-	m->g.vt = corners_new(1);
+	m->g.vt = corner_new(1);
 	for (i = 0; i < m->nleaves; i++)
 		meshleaf(m, &m->leaves[i]);
 	resolve(m);
-	return corners_count(m->g.vt);
+	return corner_count(m->g.vt);
 }

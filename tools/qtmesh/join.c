@@ -336,7 +336,7 @@ straighten(struct join *jn, uint32_t p, uint32_t y)
 	uint32_t a, b;
 
 	if (!jn->vbnd[p] || bsearch(&bv[p - 1], jn->rvsorted, bf->nrpts,
-	    sizeof(*jn->rvsorted), point_cmp) != NULL)
+	    sizeof(*jn->rvsorted), geom_pointcmp) != NULL)
 		return 0;
 	alongboundary(jn, p, &a, &b);
 	if (a == 0 || b == 0 || (y != 0 && y != a && y != b) ||
@@ -451,7 +451,7 @@ jointiny(struct mesh *m)
 	jn.rvsorted = xreallocarray(NULL, bf->nrpts + 1,
 	    sizeof(*jn.rvsorted));
 	memcpy(jn.rvsorted, bf->rpts, bf->nrpts * sizeof(*jn.rvsorted));
-	qsort(jn.rvsorted, bf->nrpts, sizeof(*jn.rvsorted), point_cmp);
+	qsort(jn.rvsorted, bf->nrpts, sizeof(*jn.rvsorted), geom_pointcmp);
 	markboundary(&jn);
 	incidence(&jn);
 	jn.edead = xcalloc(m->nelems + 1, 1);

@@ -87,7 +87,7 @@ options(struct mesh *m, int argc, char *argv[])
 			m->alltri = 1;
 			break;
 		case 'c':
-			m->keep = optclasses(optarg);
+			m->keep = cell_optclasses(optarg);
 			cflag |= 1;
 			break;
 		case 'f':
@@ -198,7 +198,7 @@ readtree(struct mesh *m, struct qtreader *r)
 			break;
 		case QT_LEAF:
 			/* with arcs, chords class the leaves again (arcs.c) */
-			if ((m->keep & CLASSBIT(rec.c.class)) ||
+			if ((m->keep & CELL_CLASSBIT(rec.c.class)) ||
 			    (m->bfit && m->b.hasarcs))
 				addleaf(m, &rec);
 			break;
@@ -248,8 +248,8 @@ main(int argc, char *argv[])
 	size_t i, nv;
 	int cflag;
 
-	setprogname_(argv[0]);
-	m.keep = CLASSBIT('F') | CLASSBIT('P');
+	xsetprogname(argv[0]);
+	m.keep = CELL_CLASSBIT('F') | CELL_CLASSBIT('P');
 	m.conform = 1;
 	m.format = QTREE;
 	m.tfrac = -1;

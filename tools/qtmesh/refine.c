@@ -660,7 +660,7 @@ fixtri(struct refiner *r, const struct todo *td)
 	    !isbad(r, &r->t[t]) || r->budget == 0)
 		return;
 	circumcentre(r, &r->t[t], &x, &y);
-	if (!isfinite(x) || !isfinite(y) || !coordok(x) || !coordok(y))
+	if (!isfinite(x) || !isfinite(y) || !parsecoordok(x) || !parsecoordok(y))
 		return;
 	at = locate(r, t, x, y, &side);
 	if (side == -2)

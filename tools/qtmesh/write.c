@@ -72,7 +72,7 @@ leafnel(const struct mesh *m, size_t i)
 static double
 gridcoord(const struct universe *u, int axis, uint64_t i)
 {
-	return cellcoord(axis ? u->y0 : u->x0, u->size, QT_GRID, i);
+	return cell_coord(axis ? u->y0 : u->x0, u->size, QT_GRID, i);
 }
 
 /* One line of numbers: integers, then reals, into fp. */
@@ -109,7 +109,7 @@ vertexxy(const struct mesh *m, uint32_t id, double *xy)
 		xy[1] = m->b.bv[id - 1].y;
 		return;
 	}
-	corners_point(m->g.vt, id, &x, &y);
+	corner_point(m->g.vt, id, &x, &y);
 	xy[0] = gridcoord(&m->u, 0, x);
 	xy[1] = gridcoord(&m->u, 1, y);
 }
@@ -152,7 +152,7 @@ writeqtree(const struct mesh *m, size_t nv, const uint32_t *inv)
 			qt_vertex(i + 1, m->b.bv[inv[i] - 1].x,
 			    m->b.bv[inv[i] - 1].y);
 		else {
-			corners_point(m->g.vt, inv[i], &x, &y);
+			corner_point(m->g.vt, inv[i], &x, &y);
 			qt_gridvertex(i + 1, QT_GRID, x, y);
 		}
 	for (i = 0; i < m->nelems; i++) {

@@ -65,7 +65,7 @@ peer_args(int argc, char *argv[], const char *name, int max, int *level)
 	long long v;
 	int ch;
 
-	setprogname_(argv[0]);
+	xsetprogname(argv[0]);
 	snprintf(line, sizeof(line), "usage: %s -l level [file]\n", name);
 	*level = -1;
 	while ((ch = getopt(argc, argv, "l:h")) != -1)
