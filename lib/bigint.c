@@ -1,19 +1,14 @@
 /*
- * Big integers (exact.h): sign and magnitude in 32-bit limbs.  The arcs'
- * exact predicates take a coordinate as an integer times 2^-BIGSHIFT and
- * an arc's quantities D, Ux, Uy (lib/arc.c) in them; parsereal's exact
- * step (lib/parse.c) compares a decimal with a halfway point in them,
- * naturals built by bigint_setu64, bigint_muladd, bigint_pow5 and
- * bigint_shl.
+ * Big integers for the arcs' exact predicates (exact.h): sign and
+ * magnitude in 32-bit limbs, a coordinate an integer times 2^-BIGSHIFT;
+ * and an arc's quantities D, Ux, Uy (lib/arc.c) in them.
  */
 #include <math.h>
-#include <stdlib.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "qtree.h"
-#include "num.h"
 #include "exact.h"
 
 void
@@ -40,7 +35,7 @@ bigint_fromdouble(struct bigint *z, double v)
 		z->n--;
 }
 
-int
+static int
 bigint_magcmp(const struct bigint *a, const struct bigint *b)
 {
 	int i;
@@ -248,82 +243,4 @@ bigint_neg(struct bigint *z)
 {
 	if (z->n > 0)
 		z->neg = !z->neg;
-}
-
-/* z = v, a natural */
-void
-bigint_setu64(struct bigint *z, uint64_t v)
-{
-	z->neg = 0;
-	z->d[0] = (uint32_t)v;
-	z->d[1] = (uint32_t)(v >> 32);
-	z->n = v >> 32 ? 2 : v != 0;
-}
-
-/*
- * z = z k + a, z a natural.  Each limb's product and carry stay under
- * 2^96, so the carry to the next limb stays under 2^64.
- */
-void
-bigint_muladd(struct bigint *z, uint64_t k, uint64_t a)
-{
-	uint64_t hi, lo, c = a;
-	int i;
-
-	for (i = 0; i < z->n; i++) {
-		mul64(z->d[i], k, &hi, &lo);
-		lo += c;
-		hi += lo < c;
-		z->d[i] = (uint32_t)lo;
-		c = hi << 32 | lo >> 32;
-	}
-	for (; c != 0; c >>= 32) {
-		if (z->n == BIGN)
-			abort();	/* its callers' bounds rule it out */
-		z->d[z->n++] = (uint32_t)c;
-	}
-}
-
-/* z = z 5^n, z a natural */
-void
-bigint_pow5(struct bigint *z, int n)
-{
-	uint64_t f = 1;
-
-	for (; n >= 27; n -= 27)	/* 5^27 < 2^64 */
-		bigint_muladd(z, 7450580596923828125u, 0);
-	for (; n > 0; n--)
-		f *= 5;
-	bigint_muladd(z, f, 0);
-}
-
-/* z = z 2^s, s >= 0 */
-void
-bigint_shl(struct bigint *z, int s)
-{
-	int w = s / 32, b = s % 32, i;
-
-	if (z->n == 0)
-		return;
-	if (z->n + w + 1 > BIGN)
-		abort();
-	z->d[z->n + w] = 0;
-	for (i = z->n - 1; i >= 0; i--) {
-		if (b != 0)
-			z->d[i + w + 1] |= z->d[i] >> (32 - b);
-		z->d[i + w] = z->d[i] << b;
-	}
-	memset(z->d, 0, w * sizeof(z->d[0]));
-	z->n += w + 1;
-	if (z->d[z->n - 1] == 0)
-		z->n--;
-}
-
-/* z = a, its limbs in use only */
-void
-bigint_copy(struct bigint *z, const struct bigint *a)
-{
-	z->neg = a->neg;
-	z->n = a->n;
-	memcpy(z->d, a->d, a->n * sizeof(a->d[0]));
 }

@@ -1,8 +1,7 @@
 /*
- * exact.h: exact arithmetic.  Intervals, inline here, for the arcs'
- * predicates (arc.c, arccheck.c), and big integers (bigint.c) for when an
- * interval holds 0 (lib/arc.c's first comment says why they suffice) and
- * for parsereal's exact step (lib/parse.c).
+ * exact.h: the exact arithmetic of arcs, for arc.c and arccheck.c:
+ * intervals, inline here, and big integers (bigint.c) for when an
+ * interval holds 0.  lib/arc.c's first comment says why they suffice.
  */
 
 /*
@@ -84,9 +83,8 @@ iv_sign(struct interval a)
 }
 
 /*
- * Big integers, bigint: at most BIGN 32-bit limbs, sign and magnitude.
- * BIGN limbs hold the arcs' products (lib/arc.c) and, with room to spare,
- * parsereal's decimals and halfway points (under 2^2666, lib/parse.c).
+ * Big integers, bigint: at most BIGN 32-bit limbs, sign and magnitude
+ * (lib/parse.c has naturals of its own, bignat, for decimals).
  */
 #define BIGSHIFT	400
 #define BIGN		384
@@ -114,12 +112,6 @@ void	 bigint_dot(struct bigint *, const struct bigint *,
 void	 bigint_neg(struct bigint *);
 void	 bigint_shr(struct bigint *, int);
 int	 bigint_sign(const struct bigint *);
-int	 bigint_magcmp(const struct bigint *, const struct bigint *);
-void	 bigint_copy(struct bigint *, const struct bigint *);
-void	 bigint_setu64(struct bigint *, uint64_t);
-void	 bigint_muladd(struct bigint *, uint64_t, uint64_t);
-void	 bigint_pow5(struct bigint *, int);
-void	 bigint_shl(struct bigint *, int);
 int	 bigint_lowbit(double);
 void	 bigint_arc(const struct arc *, struct bigarc *);
 void	 bigint_arcshift(const struct arc *, struct bigarc *, int);

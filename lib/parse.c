@@ -30,7 +30,6 @@
 
 #include "qtree.h"
 #include "num.h"
-#include "exact.h"
 
 /* A digit's value, or 10 or more for any other character. */
 #define DIGIT(c)	((unsigned)(unsigned char)(c) - '0')
@@ -124,26 +123,109 @@ lemire(uint64_t w, int q, uint64_t *m, int *e)
 }
 
 /*
+ * Big naturals for the exact step, bignat: little-endian 64-bit limbs, n of
+ * them in use (lib/bigint.c has signed big integers of its own, bigint, with
+ * 32-bit limbs and four times the room).
+ */
+#define LIMBS	48	/* 3072 bits: exact() needs 2666 */
+
+struct bignat {
+	int		 n;
+	uint64_t	 d[LIMBS];
+};
+
+static void
+bignat_set(struct bignat *x, uint64_t v)
+{
+	x->d[0] = v;
+	x->n = v != 0;
+}
+
+/* x = x k + a */
+static void
+bignat_muladd(struct bignat *x, uint64_t k, uint64_t a)
+{
+	uint64_t hi, lo, c = a;
+	int i;
+
+	for (i = 0; i < x->n; i++) {
+		mul64(x->d[i], k, &hi, &lo);
+		lo += c;
+		c = hi + (lo < c);
+		x->d[i] = lo;
+	}
+	if (c != 0) {
+		if (x->n == LIMBS)
+			abort();	/* the bound in exact() says it cannot be */
+		x->d[x->n++] = c;
+	}
+}
+
+static void
+bignat_pow5(struct bignat *x, int n)
+{
+	uint64_t f = 1;
+
+	for (; n >= 27; n -= 27)
+		bignat_muladd(x, 7450580596923828125u, 0);	/* 5^27 < 2^64 */
+	for (; n > 0; n--)
+		f *= 5;
+	bignat_muladd(x, f, 0);
+}
+
+static void
+bignat_shl(struct bignat *x, int n)
+{
+	int limbs = n / 64, bits = n % 64, i;
+
+	if (x->n == 0)
+		return;
+	if (x->n + limbs + 1 > LIMBS)
+		abort();
+	x->d[x->n + limbs] = 0;
+	for (i = x->n - 1; i >= 0; i--) {
+		if (bits != 0)
+			x->d[i + limbs + 1] |= x->d[i] >> (64 - bits);
+		x->d[i + limbs] = x->d[i] << bits;
+	}
+	memset(x->d, 0, limbs * sizeof(x->d[0]));
+	x->n += limbs + 1;
+	if (x->d[x->n - 1] == 0)
+		x->n--;
+}
+
+static int
+bignat_cmp(const struct bignat *x, const struct bignat *y)
+{
+	int i;
+
+	if (x->n != y->n)
+		return x->n > y->n ? 1 : -1;
+	for (i = x->n - 1; i >= 0; i--)
+		if (x->d[i] != y->d[i])
+			return x->d[i] > y->d[i] ? 1 : -1;
+	return 0;
+}
+
+/*
  * The sign of D - mm 2^j, where D = N 10^k plus a tail under 10^k, nonzero
  * when tail is set.  With the power of five moved to the side where it
  * multiplies (l = N 5^k, p = 1 for k >= 0; l = N, p = 5^-k for k < 0),
  * l 2^k is compared with p mm 2^j, the smaller power of two divided out.
  */
 static int
-cmpdec(const struct bigint *l, const struct bigint *p, int k, int tail,
+cmpdec(const struct bignat *l, const struct bignat *p, int k, int tail,
     uint64_t mm, int j)
 {
-	struct bigint a, b;
+	struct bignat a = *l, b = *p;
 	int c;
 
-	bigint_copy(&a, l);
-	bigint_copy(&b, p);
-	bigint_muladd(&b, mm, 0);
+	bignat_muladd(&b, mm, 0);
 	if (k > j)
-		bigint_shl(&a, k - j);
+		bignat_shl(&a, k - j);
 	else
-		bigint_shl(&b, j - k);
-	c = bigint_magcmp(&a, &b);
+		bignat_shl(&b, j - k);
+	c = bignat_cmp(&a, &b);
 	return c != 0 ? c : tail;
 }
 
@@ -170,36 +252,36 @@ static int
 exact(const char *first, const char *stop, int q, uint64_t m, int e,
     uint64_t *bits)
 {
-	struct bigint n, p;
+	struct bignat n, p;
 	const char *t;
 	size_t ns;
 	uint64_t chunk = 0, scale = 1;
 	int nd = 0, tail = 0, k, c, biased, s;
 
-	bigint_setu64(&n, 0);
+	n.n = 0;
 	for (t = first; t < stop && nd < MAXDIG; t++) {
 		if (*t == '.')
 			continue;
 		chunk = chunk * 10 + (uint64_t)(*t - '0');
 		nd++;
 		if ((scale *= 10) == 10000000000000000000u) {
-			bigint_muladd(&n, scale, chunk);
+			bignat_muladd(&n, scale, chunk);
 			chunk = 0;
 			scale = 1;
 		}
 	}
-	bigint_muladd(&n, scale, chunk);
+	bignat_muladd(&n, scale, chunk);
 	for (ns = nd; t < stop; t++)
 		if (*t != '.') {
 			ns++;
 			tail |= *t != '0';
 		}
 	k = q + (ns < 19 ? (int)ns : 19) - nd;
-	bigint_setu64(&p, 1);
+	bignat_set(&p, 1);
 	if (k >= 0)
-		bigint_pow5(&n, k);
+		bignat_pow5(&n, k);
 	else
-		bigint_pow5(&p, -k);
+		bignat_pow5(&p, -k);
 
 	while ((c = cmpdec(&n, &p, k, tail, 2 * m + 1, e - 1)) >= 0) {
 		if (c == 0 && !(m & 1))
