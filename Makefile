@@ -15,7 +15,8 @@ MAN1 = man/polyread.1 man/qtsplit.1 man/qtleaves.1 man/qtstats.1 \
 MAN5 = man/qtree.5
 LIBOBJ = lib/msg.o lib/hugepage.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
 	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
-	lib/pow5.o lib/op.o lib/arc.o lib/cut.o lib/earclip.o
+	lib/pow5.o lib/op.o lib/arc.o lib/cut.o lib/earclip.o \
+	lib/solid.o lib/read3.o lib/write3.o
 
 all: $(BIN)
 
@@ -89,8 +90,12 @@ tools/gen/genpow5: tools/gen/genpow5.c
 tests/check/rangecheck: tests/check/rangecheck.c tests/check/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/rangecheck.c lib/libqtree.a $(LDLIBS)
 
+tests/check/solidcat: tests/check/solidcat.c lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/solidcat.c lib/libqtree.a $(LDLIBS)
+
 # What the suite runs beyond the programs; tests/mutate.sh builds it too.
-testprogs: all tests/check/fmtcheck tests/check/numcheck tools/gen/genpow5 tests/check/rangecheck
+testprogs: all tests/check/fmtcheck tests/check/numcheck tools/gen/genpow5 tests/check/rangecheck \
+	tests/check/solidcat
 
 # What the suite needs from Debian: make deps installs it all; make test
 # stops at once, naming the apt-get line, when bats or mandoc is missing.

@@ -114,3 +114,13 @@ struct pow5 {
 };
 
 extern const struct pow5 pow5tab[POW5MAX - POW5MIN + 1];
+
+/* read.c, for read3.c: lines and fields read and checked as 2D ones. */
+char	*qt_rawline(struct qtreader *, size_t *);
+long	 qt_lineno(const struct qtreader *);
+double	 qt_realfield(struct qtreader *, const char *, const char *);
+long long qt_intfield(struct qtreader *, const char *, const char *,
+	    long long, long long);
+
+/* write.c, for write3.c: n bytes holding k records, newlines included. */
+void	 qt_putrecords(const char *, size_t, unsigned long long);

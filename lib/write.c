@@ -480,6 +480,14 @@ qt_op(const struct qtop *op)
 	recorded(p);
 }
 
+/* For write3.c: bytes of k records. */
+void
+qt_putrecords(const char *s, size_t n, unsigned long long k)
+{
+	put(s, n);
+	w.written += k;
+}
+
 /* A record as read: a ring with its v records, anything else alone. */
 void
 qt_echo(const struct qtrec *rec)
