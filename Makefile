@@ -35,7 +35,9 @@ lib/libqtree.a: $(LIBOBJ)
 POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
 	tools/polyread/brep.o tools/polyread/xy.o tools/polyread/wkt.o \
 	tools/polyread/poly.o tools/polyread/csv.o tools/polyread/geojson.o \
-	tools/polyread/valid.o tools/polyread/sweep.o tools/polyread/curve.o
+	tools/polyread/valid.o tools/polyread/sweep.o tools/polyread/curve.o \
+	tools/polyread/solid3.o tools/polyread/off.o tools/polyread/stl.o \
+	tools/polyread/obj.o tools/polyread/ply.o
 # So has qtmesh.
 QTMESHOBJ = tools/qtmesh/main.o tools/qtmesh/tree.o tools/qtmesh/conform.o \
 	tools/qtmesh/bfit.o tools/qtmesh/boundary.o tools/qtmesh/join.o \

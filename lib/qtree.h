@@ -504,6 +504,19 @@ struct cell3 {
 int	 orient3d(struct point3, struct point3, struct point3, struct point3);
 int	 crossdir3(struct point3, struct point3, struct point3, struct point3,
 	    int);
+/*
+ * Parity: a point p stands for p + (e, e^2, e^3), e > 0 infinitesimal, on
+ * no plane, line or point of any surface.  orient3d_nudged is orient3d at
+ * that point, never 0 for a triangle of positive area; axisline_meets
+ * says whether the line through it along axis passes through a triangle,
+ * ray3_crosses whether the ray from it toward +x crosses the triangle.
+ */
+int	 orient3d_nudged(struct point3, struct point3, struct point3,
+	    struct point3);
+int	 axisline_meets(struct point3, struct point3, struct point3,
+	    struct point3, int);
+int	 ray3_crosses(struct point3, struct point3, struct point3,
+	    struct point3);
 int	 univ3deepest(const struct universe3 *);
 const char *univ3check(const struct universe3 *, int);
 int	 pathcell3(const char *, int, uint64_t *, uint64_t *, uint64_t *);

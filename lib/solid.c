@@ -158,3 +158,71 @@ pathcell3(const char *path, int level, uint64_t *ix, uint64_t *iy,
 	}
 	return path[level] == '\0' ? 0 : -1;
 }
+
+/*
+ * Parity in space.  A point p is taken as p + d, d = (e, e^2, e^3) for an
+ * infinitesimal e > 0, so that it lies on no plane, line or point of the
+ * surface: orient3d's f(p + d) = f(p) + nx e + ny e^2 + nz e^3, n the
+ * normal (b - a) x (c - a), whose components are the orientations of the
+ * triangle projected along each axis.
+ */
+static int
+sgn(double v)
+{
+	return (v > 0) - (v < 0);
+}
+
+int
+orient3d_nudged(struct point3 a, struct point3 b, struct point3 c,
+    struct point3 p)
+{
+	int s;
+
+	if ((s = orient3d(a, b, c, p)) != 0)
+		return s;
+	if ((s = orient2d(a.y, a.z, b.y, b.z, c.y, c.z)) != 0)
+		return s;
+	if ((s = orient2d(a.z, a.x, b.z, b.x, c.z, c.x)) != 0)
+		return s;
+	return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
+}
+
+/*
+ * Whether the line through p + d along axis passes through the triangle:
+ * projected along the axis, p + d lies inside it (never on a side: the
+ * projection's first coordinate is moved by the larger infinitesimal, so
+ * the side s->t sees orient2d, then -(t.v - s.v), then t.u - s.u).
+ */
+int
+axisline_meets(struct point3 a, struct point3 b, struct point3 c,
+    struct point3 p, int axis)
+{
+	struct point v[3] = { project(a, axis), project(b, axis),
+	    project(c, axis) }, q = project(p, axis);
+	int o = orient2d(v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y);
+	int i, e;
+
+	if (o == 0)
+		return 0;
+	for (i = 0; i < 3; i++) {
+		struct point s = v[i], t = v[(i + 1) % 3];
+
+		if ((e = orient2d(s.x, s.y, t.x, t.y, q.x, q.y)) == 0 &&
+		    (e = -sgn(t.y - s.y)) == 0)
+			e = sgn(t.x - s.x);
+		if (e != o)
+			return 0;
+	}
+	return 1;
+}
+
+/* Whether the ray from p + d toward +x crosses the triangle. */
+int
+ray3_crosses(struct point3 a, struct point3 b, struct point3 c,
+    struct point3 p)
+{
+	if (!axisline_meets(a, b, c, p, 0))
+		return 0;
+	return orient3d_nudged(a, b, c, p) !=
+	    orient2d(a.y, a.z, b.y, b.z, c.y, c.z);
+}

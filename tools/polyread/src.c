@@ -56,6 +56,18 @@ longlines(const struct src *s)
 }
 
 /*
+ * Whether an input with a NUL byte at nul may be binary STL or PLY: PLY
+ * says so on its first line, and binary STL has one in its header or its
+ * count (its 84 bytes) or in its first triangle's floats.
+ */
+static int
+maybinary(const struct src *s, const char *nul)
+{
+	return strncmp(s->buf, "ply\n", 4) == 0 ||
+	    strncmp(s->buf, "ply\r\n", 5) == 0 || nul - s->buf < 134;
+}
+
+/*
  * Reads an input whole, checking each block as it comes, so that neither
  * a NUL byte nor a line without end makes it read on: a block holds at
  * most LINEMAX bytes, so a longer line runs past a block's end.
@@ -76,6 +88,7 @@ readall(struct src *s, const char *path)
 	s->buf = xmalloc(cap);
 	hugepages(s->buf, cap);	/* read into once: 2 MB faults, not 4 KB */
 	s->len = 0;
+	s->nulline = 0;
 	for (;;) {
 		if (cap - s->len - 1 == 0) {
 			cap *= 2;
@@ -88,8 +101,14 @@ readall(struct src *s, const char *path)
 			break;
 		p = s->buf + s->len;
 		s->len += n;
-		if ((nl = memchr(p, '\0', n)) != NULL)
-			errat(s->name, lineat(s, nl), "NUL byte in input");
+		if (s->nulline == 0 && (nl = memchr(p, '\0', n)) != NULL) {
+			/* binary STL and PLY hold them; main asks the format */
+			if (!maybinary(s, nl))
+				errat(s->name, lineat(s, nl), "NUL byte in "
+				    "input");
+			s->nulline = lineat(s, nl);
+			longok = 1;
+		}
 		if (longok)
 			continue;
 		nl = memchr(p, '\n', n);
