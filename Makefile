@@ -16,7 +16,7 @@ MAN5 = man/qtree.5
 LIBOBJ = lib/msg.o lib/hugepage.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
 	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
 	lib/pow5.o lib/op.o lib/arc.o lib/cut.o lib/earclip.o \
-	lib/solid.o lib/read3.o lib/write3.o
+	lib/solid.o lib/read3.o lib/write3.o lib/split3.o
 
 all: $(BIN)
 
@@ -45,8 +45,8 @@ QTMESHOBJ = tools/qtmesh/main.o tools/qtmesh/tree.o tools/qtmesh/conform.o \
 $(BIN): lib/libqtree.a
 polyread: $(POLYREADOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(POLYREADOBJ) lib/libqtree.a $(LDLIBS)
-qtsplit: tools/qtsplit.o
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o lib/libqtree.a $(LDLIBS)
+qtsplit: tools/qtsplit.o tools/qtsplit3.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o tools/qtsplit3.o lib/libqtree.a $(LDLIBS)
 qtleaves: tools/qtleaves.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtleaves.o lib/libqtree.a $(LDLIBS)
 qtstats: tools/qtstats.o
@@ -69,7 +69,8 @@ qtbool: tools/qtbool.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbool.o lib/libqtree.a $(LDLIBS)
 $(POLYREADOBJ): lib/qtree.h tools/polyread/polyread.h
 $(QTMESHOBJ): lib/qtree.h tools/qtmesh/qtmesh.h
-tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
+tools/qtsplit.o tools/qtsplit3.o: tools/qtsplit.h
+tools/qtsplit.o tools/qtsplit3.o tools/qtleaves.o tools/qtstats.o \
 tools/qtcat.o tools/qtbalance.o \
 tools/qtbool.o: lib/qtree.h
 
