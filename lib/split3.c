@@ -123,6 +123,28 @@ pt3(double x, double y, double z)
 	return p;
 }
 
+/* (3 + 16 eps) eps: orient2d's bound, which holds for any (a - b)(c - d) - (e - f)(g - h). */
+#define CROSS_BOUND	(3.3306690738754716e-16)
+
+/*
+ * The sign of cross(q - p, t - k) in the plane across axis (u, v its
+ * other two), filtered: exact arithmetic only when the bound cannot tell.
+ */
+static int
+crosssign(struct point3 p, struct point3 q, struct point3 k, struct point3 t,
+    int axis, int u, int v)
+{
+	double l = (coord(q, u) - coord(p, u)) * (coord(t, v) - coord(k, v));
+	double r = (coord(q, v) - coord(p, v)) * (coord(t, u) - coord(k, u));
+	double det = l - r, bound = CROSS_BOUND * (fabs(l) + fabs(r));
+
+	if (det > bound)
+		return 1;
+	if (-det > bound)
+		return -1;
+	return crossdir3(p, q, k, t, axis);
+}
+
 /*
  * Whether triangle t meets the open box lo..hi.  o[8], when not NULL,
  * holds orient3d at the box's corners (corner c at x bit c & 1, y bit
@@ -138,6 +160,10 @@ meetsbox(const struct tri *t, const double lo[3], const double hi[3],
 	for (a = 0; a < 3; a++)
 		if (t->hi[a] <= lo[a] || t->lo[a] >= hi[a])
 			return 0;
+	for (c = 0; c < 3; c++)	/* a corner inside: no axis can part them */
+		if (t->v[c].x > lo[0] && t->v[c].x < hi[0] && t->v[c].y > lo[1] &&
+		    t->v[c].y < hi[1] && t->v[c].z > lo[2] && t->v[c].z < hi[2])
+			return 1;
 	if (o == NULL) {
 		memset(own, 2, sizeof(own));
 		o = own;
@@ -173,8 +199,8 @@ meetsbox(const struct tri *t, const double lo[3], const double hi[3],
 				cc[v] = c & 2 ? hi[v] : lo[v];
 				k = pt3(cc[0], cc[1], cc[2]);
 				/* the signs of L.(p - k) and L.(r - k) */
-				s1 = crossdir3(p, q, k, p, a);
-				s2 = crossdir3(p, q, k, r, a);
+				s1 = crosssign(p, q, k, p, a, u, v);
+				s2 = crosssign(p, q, k, r, a, u, v);
 				pos |= s1 > 0 || s2 > 0;
 				neg |= s1 < 0 || s2 < 0;
 			}
