@@ -49,8 +49,8 @@ qtsplit: tools/qtsplit.o tools/qtsplit3.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o tools/qtsplit3.o lib/libqtree.a $(LDLIBS)
 qtleaves: tools/qtleaves.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtleaves.o lib/libqtree.a $(LDLIBS)
-qtstats: tools/qtstats.o
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o lib/libqtree.a $(LDLIBS)
+qtstats: tools/qtstats.o tools/qtstats3.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o tools/qtstats3.o lib/libqtree.a $(LDLIBS)
 # qt2svg too: main.c, out.c, window.c, leaves.c, rings.c, mesh.c,
 # quality.c, legend.c.
 QT2SVGOBJ = tools/qt2svg/main.o tools/qt2svg/out.o tools/qt2svg/window.o \
@@ -70,7 +70,8 @@ qtbool: tools/qtbool.o
 $(POLYREADOBJ): lib/qtree.h tools/polyread/polyread.h
 $(QTMESHOBJ): lib/qtree.h tools/qtmesh/qtmesh.h
 tools/qtsplit.o tools/qtsplit3.o: tools/qtsplit.h
-tools/qtsplit.o tools/qtsplit3.o tools/qtleaves.o tools/qtstats.o \
+tools/qtstats.o tools/qtstats3.o: tools/qtstats.h
+tools/qtsplit.o tools/qtsplit3.o tools/qtleaves.o tools/qtstats.o tools/qtstats3.o \
 tools/qtcat.o tools/qtbalance.o \
 tools/qtbool.o: lib/qtree.h
 

@@ -11,9 +11,12 @@
 #include <unistd.h>
 
 #include "qtree.h"
+#include "qtstats.h"
 
 
 enum { F, E, P };
+
+int stats3table;
 
 /* The polygon, summed ring by ring as its records stream past. */
 static struct polygon {
@@ -397,6 +400,8 @@ readstream(struct qtreader *r)
 
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
+		case QT_SOLID:	/* a 3D stream: qtstats3.c */
+			exit(stats3main(r, stats3table));
 		case QT_UNIVERSE:
 			tree.u = rec.u;
 			tree.haveuniverse = 1;
@@ -966,7 +971,7 @@ main(int argc, char *argv[])
 	while ((ch = getopt(argc, argv, "lvh")) != -1)
 		switch (ch) {
 		case 'l':
-			table = 1;
+			table = stats3table = 1;
 			break;
 		case 'v':
 			verbose = 1;
@@ -983,7 +988,7 @@ main(int argc, char *argv[])
 	mo_init(&poly.ring);
 	xs_init(&tree.cut);
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
-	    QT_ARCS | (verbose ? QT_VERBOSE : 0));
+	    QT_ARCS | QT_SOLIDS | (verbose ? QT_VERBOSE : 0));
 	readstream(r);
 	qt_close(r);
 	report(table);
