@@ -68,6 +68,23 @@ maybinary(const struct src *s, const char *nul)
 }
 
 /*
+ * Whether an input taken for binary STL has run past the length its count
+ * gives: then it is none, and no more of it is read (/dev/zero says 0).
+ */
+static int
+pastbinary(const struct src *s)
+{
+	const unsigned char *b = (const unsigned char *)s->buf;
+	unsigned long long n;
+
+	if (s->len < 84 || strncmp(s->buf, "ply", 3) == 0)
+		return 0;
+	n = (unsigned long long)b[80] | (unsigned long long)b[81] << 8 |
+	    (unsigned long long)b[82] << 16 | (unsigned long long)b[83] << 24;
+	return s->len > 84 + 50 * n;
+}
+
+/*
  * Reads an input whole, checking each block as it comes, so that neither
  * a NUL byte nor a line without end makes it read on: a block holds at
  * most LINEMAX bytes, so a longer line runs past a block's end.
@@ -109,6 +126,8 @@ readall(struct src *s, const char *path)
 			s->nulline = lineat(s, nl);
 			longok = 1;
 		}
+		if (s->nulline > 0 && pastbinary(s))
+			errat(s->name, s->nulline, "NUL byte in input");
 		if (longok)
 			continue;
 		nl = memchr(p, '\n', n);
