@@ -207,3 +207,14 @@ cubeformats() {
 	polyread "$m" | volumes > got
 	awk '$2 <= 0 { exit 1 }' got
 }
+
+@test "-f forcing a 3D format on a short input is refused, not read past its end" {
+	# found by AFL++: the input "O" read as OFF
+	printf 'O' > o.txt
+	run -1 --separate-stderr polyread -f off o.txt
+	[ "$stderr" = "polyread: o.txt:1: expected OFF: O" ]
+	run -1 --separate-stderr polyread -f stl o.txt
+	[ "$stderr" = "polyread: o.txt:1: neither ASCII STL (solid, then facets) nor binary (84 bytes at least): 1 bytes" ]
+	run -1 --separate-stderr polyread -f ply o.txt
+	[ "$stderr" = "polyread: o.txt:1: not PLY: the first line is not ply" ]
+}

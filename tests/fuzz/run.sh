@@ -78,8 +78,8 @@ wait_builds() {
 	pending=
 }
 building build polyread tools/polyread/*.c
-building build qtsplit tools/qtsplit.c
-building build qtstats tools/qtstats.c
+building build qtsplit tools/qtsplit.c tools/qtsplit3.c
+building build qtstats tools/qtstats.c tools/qtstats3.c
 building build qtleaves tools/qtleaves.c
 building build qtbalance tools/qtbalance.c
 building build qtmesh tools/qtmesh/*.c

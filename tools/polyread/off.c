@@ -36,7 +36,8 @@ parseoff(struct src *s, struct input *in)
 	size_t base, *v = NULL, cap = 0;
 	long line;
 
-	skipspace(s);
+	if (!skipspace(s) || strncmp(s->p, "OFF", 3) != 0)
+		badtoken(s, "expected OFF");
 	s->p += 3;
 	nv = integer(s, "number of vertices", 0, (long long)1 << 40);
 	nf = integer(s, "number of faces", 1, (long long)1 << 40);

@@ -210,6 +210,8 @@ parseply(struct src *s, struct input *in)
 	int ne, i, k;
 
 	s->p = s->buf;
+	if (!isply(s))
+		readerr(s->name, 1, "not PLY: the first line is not ply");
 	header(s, e, &ne, &r.binary);
 	r.s = s;
 	r.p = (const unsigned char *)s->p;

@@ -121,10 +121,14 @@ static void
 parsebinary(struct src *s, struct input *in)
 {
 	const unsigned char *b = (const unsigned char *)s->buf;
-	uint32_t n = le32(b + 80), i;
+	uint32_t n, i;
 	size_t v[3];
 	int k;
 
+	if (s->len < 84)
+		readerr(s->name, 1, "neither ASCII STL (solid, then facets) "
+		    "nor binary (84 bytes at least): %zu bytes", s->len);
+	n = le32(b + 80);
 	if ((unsigned long long)n * 50 + 84 != s->len)
 		readerr(s->name, 0, "binary STL of %lu triangles needs %llu "
 		    "bytes, the file has %zu", (unsigned long)n,
