@@ -123,6 +123,10 @@ univ3check(const struct universe3 *u, int level)
 	if (deepest >= 0 && level <= deepest)
 		return NULL;
 	univdeepest(da <= db ? &a : &b, why, sizeof(why));
+	/* the square (z0, z0) speaks of its x0 and y0: they are z0 */
+	if (da > db && (strncmp(why, "its x0", 6) == 0 ||
+	    strncmp(why, "its y0", 6) == 0))
+		why[4] = 'z';
 	fmtreal(x0, u->x0);
 	fmtreal(y0, u->y0);
 	fmtreal(z0, u->z0);

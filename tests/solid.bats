@@ -123,3 +123,9 @@ refuse() {
 		grep -qF ".It $r" "$TOP/man/qtree.5"
 	done
 }
+
+@test "a universe whose z0 + size breaks the range says z0" {
+	printf 'qtree 1 3\nuniverse 0 0 1e100 1e100\nend 1\n' > z.q3
+	run -1 --separate-stderr "$SOLIDCAT" z.q3
+	[ "$stderr" = "solidcat: z.q3:2: universe 0 0 1e+100 1e+100 is outside the supported range: its z0 + size, 2e+100, lies past 1e100" ]
+}
