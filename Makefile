@@ -17,7 +17,8 @@ QTREEH = lib/qtree.h lib/arcfilter.h	# the public header and what it includes
 LIBOBJ = lib/msg.o lib/hugepage.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o lib/read.o \
 	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
 	lib/pow5.o lib/op.o lib/arc.o lib/arccheck.o lib/bigint.o lib/cut.o \
-	lib/earclip.o lib/celltext.o lib/readhead.o
+	lib/earclip.o lib/celltext.o lib/readhead.o lib/solid.o lib/read3.o \
+	lib/write3.o lib/split3.o
 
 all: $(BIN)
 
@@ -37,7 +38,8 @@ POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
 	tools/polyread/brep.o tools/polyread/xy.o tools/polyread/wkt.o \
 	tools/polyread/poly.o tools/polyread/csv.o tools/polyread/geojson.o \
 	tools/polyread/valid.o tools/polyread/sweep.o tools/polyread/curve.o \
-	tools/polyread/touch.o
+	tools/polyread/touch.o tools/polyread/solid3.o tools/polyread/off.o \
+	tools/polyread/stl.o tools/polyread/obj.o tools/polyread/ply.o
 # So has qtmesh.
 QTMESHOBJ = tools/qtmesh/main.o tools/qtmesh/tree.o tools/qtmesh/conform.o \
 	tools/qtmesh/bfit.o tools/qtmesh/boundary.o tools/qtmesh/join.o \
@@ -46,12 +48,12 @@ QTMESHOBJ = tools/qtmesh/main.o tools/qtmesh/tree.o tools/qtmesh/conform.o \
 $(BIN): lib/libqtree.a
 polyread: $(POLYREADOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(POLYREADOBJ) lib/libqtree.a $(LDLIBS)
-qtsplit: tools/qtsplit.o
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o lib/libqtree.a $(LDLIBS)
+qtsplit: tools/qtsplit.o tools/qtsplit3.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o tools/qtsplit3.o lib/libqtree.a $(LDLIBS)
 qtleaves: tools/qtleaves.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtleaves.o lib/libqtree.a $(LDLIBS)
-qtstats: tools/qtstats.o
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o lib/libqtree.a $(LDLIBS)
+qtstats: tools/qtstats.o tools/qtstats3.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o tools/qtstats3.o lib/libqtree.a $(LDLIBS)
 # qt2svg too: main.c, out.c, window.c, leaves.c, rings.c, mesh.c,
 # quality.c, legend.c.
 QT2SVGOBJ = tools/qt2svg/main.o tools/qt2svg/out.o tools/qt2svg/window.o \
@@ -70,7 +72,9 @@ qtbool: tools/qtbool.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtbool.o lib/libqtree.a $(LDLIBS)
 $(POLYREADOBJ): $(QTREEH) tools/polyread/polyread.h
 $(QTMESHOBJ): $(QTREEH) tools/qtmesh/qtmesh.h
-tools/qtsplit.o tools/qtleaves.o tools/qtstats.o \
+tools/qtsplit.o tools/qtsplit3.o: tools/qtsplit.h
+tools/qtstats.o tools/qtstats3.o: tools/qtstats.h
+tools/qtsplit.o tools/qtsplit3.o tools/qtleaves.o tools/qtstats.o tools/qtstats3.o \
 tools/qtcat.o tools/qtbalance.o \
 tools/qtbool.o: $(QTREEH)
 
@@ -95,10 +99,12 @@ tests/check/rangecheck: tests/check/rangecheck.c tests/check/splitmix.h lib/libq
 
 tests/check/predcheck: tests/check/predcheck.c lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/predcheck.c lib/libqtree.a $(LDLIBS)
+tests/check/solidcat: tests/check/solidcat.c lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/solidcat.c lib/libqtree.a $(LDLIBS)
 
 # What the suite runs beyond the programs; tests/mutate.sh builds it too.
 testprogs: all tests/check/fmtcheck tests/check/numcheck tools/gen/genpow5 tests/check/rangecheck \
-	tests/check/predcheck
+	tests/check/predcheck tests/check/solidcat
 
 # What the suite needs from Debian: make deps installs it all; make test
 # stops at once, naming the apt-get line, when bats or mandoc is missing.

@@ -254,7 +254,8 @@ void	 corner_point(const struct corners *, uint32_t, uint64_t *,
  */
 enum qtkind {
 	QT_EOF, QT_UNIVERSE, QT_LEVEL, QT_RING, QT_NODE, QT_LEAF,
-	QT_VERTEX, QT_ELEM, QT_OBJECT, QT_OP, QT_OTHER
+	QT_VERTEX, QT_ELEM, QT_OBJECT, QT_OP, QT_OTHER,
+	QT_SOLID, QT_SHELL	/* a 3D stream: see read3.c below */
 };
 
 /*
@@ -327,7 +328,8 @@ enum {
 	QT_VERBOSE = 2,		/* progress on stderr, as -v asks */
 	QT_UNSEALED = 4,	/* no seal: see above */
 	QT_CONCAT = 8,		/* sealed streams one after another, or none */
-	QT_ARCS = 16		/* rings may have arcs; else they are refused */
+	QT_ARCS = 16,		/* rings may have arcs; else they are refused */
+	QT_SOLIDS = 32		/* qt_read gives QT_SOLID at a 3D header */
 };
 
 struct qtreader *qt_open(FILE *, const char *, int);
@@ -481,5 +483,115 @@ struct earclip *earclip_new(void);
 void	 earclip_free(struct earclip *);
 size_t	 earclip_region(struct earclip *, const struct point *, const size_t *,
 	    size_t, const size_t **);
+
+/*
+ * 3D streams: solids bounded by closed triangulated shells, and octrees.
+ *
+ * solid.c: orient3d(a, b, c, d) is the sign of (d - a) . ((b - a) x (c -
+ * a)): > 0 when d lies on the side of the plane a, b, c toward which the
+ * triangle's right-hand normal points (the outside, for a face of an
+ * outward-oriented shell), < 0 on the other side, 0 in the plane; exact
+ * (a floating filter, then an expansion) unless a product of three
+ * coordinates underflows, which needs coordinates below about 1e-98.
+ * crossdir3(a, b, c, d, axis) is arc_crossdir of the four points projected
+ * along axis (0 x, 1 y, 2 z) onto the plane of the other two, in
+ * increasing order.  Cells: at level L the universe is a 2^L x 2^L x 2^L
+ * grid; a path has one digit per level, digit = 4 z bit + 2 y bit + x bit.
+ */
+struct point3 {
+	double	x, y, z;
+};
+
+struct universe3 {
+	double	x0, y0, z0, size;
+};
+
+/*
+ * A shell: nv vertices and nt triangles, t[3 k .. 3 k + 2] the vertices
+ * of triangle k, counted from 0; an outer shell's triangles run
+ * counter-clockwise seen from outside the solid, a cavity's likewise (the
+ * solid's outside being the void), so every normal points out of the solid.
+ */
+struct shell {
+	long		 id;
+	int		 cavity;
+	size_t		 nv, nt;
+	struct point3	*v;
+	size_t		*t;
+};
+
+struct cell3 {
+	const char	*path;	/* NUL-terminated; "." for the root */
+	int		 level;
+	uint64_t	 ix, iy, iz;
+	double		 x, y, z, size;
+	char		 class;	/* 'F', 'E', 'P'; 0 for a node */
+};
+
+int	 orient3d(struct point3, struct point3, struct point3, struct point3);
+int	 crossdir3(struct point3, struct point3, struct point3, struct point3,
+	    int);
+/*
+ * Parity: a point p stands for p + (e, e^2, e^3), e > 0 infinitesimal, on
+ * no plane, line or point of any surface.  orient3d_nudged is orient3d at
+ * that point, never 0 for a triangle of positive area; axisline_meets
+ * says whether the line through it along axis passes through a triangle,
+ * ray3_crosses whether the ray from it toward +x crosses the triangle.
+ */
+int	 orient3d_nudged(struct point3, struct point3, struct point3,
+	    struct point3);
+int	 axisline_meets(struct point3, struct point3, struct point3,
+	    struct point3, int);
+int	 ray3_crosses(struct point3, struct point3, struct point3,
+	    struct point3);
+int	 univ3deepest(const struct universe3 *);
+const char *univ3check(const struct universe3 *, int);
+int	 pathcell3(const char *, int, uint64_t *, uint64_t *, uint64_t *);
+
+/*
+ * read3.c: a 3D stream.  qt_read, opened with QT_SOLIDS, gives QT_SOLID
+ * right after a 3D header (qtree 1 3); qt3_open then reads the rest of
+ * the stream, every record checked as qt_read checks 2D ones.  qt3_read
+ * gives QT_UNIVERSE, QT_LEVEL, QT_SHELL (whole, with its v and f
+ * records), QT_NODE, QT_LEAF, QT_OTHER, and QT_EOF after the end record.
+ */
+struct qt3rec {
+	enum qtkind	 kind;
+	const char	*line;	/* as read; a shell's records follow it */
+	size_t		 len;
+	long		 lineno;
+	unsigned long long nrec;
+	struct universe3 u;
+	int		 level;
+	struct shell	 shell;
+	struct cell3	 c;
+};
+
+struct qt3reader *qt3_open(struct qtreader *);
+enum qtkind qt3_read(struct qt3reader *, struct qt3rec *);
+void	 qt3_close(struct qt3reader *);
+
+/* write3.c: the writer of 3D streams, on write.c's buffer and count. */
+void	 qt3_header(void);
+void	 qt3_universe(const struct universe3 *);
+void	 qt3_shell(const struct shell *);
+void	 qt3_cell(const struct universe3 *, const struct cell3 *);
+void	 qt3_echo(const struct qt3rec *);
+
+/*
+ * split3.c: the exact classifier of 3D cells, as split.c's for 2D: a
+ * cube is P when a triangle meets its open interior, else F or E by the
+ * even-odd parity of a point just inside its lowest corner, carried from
+ * the parent.  split3_children gives the eight children's parities and
+ * sorts the cell's triangles into them; split3_child moves child q's to
+ * the next level's list and gives their count.
+ */
+struct splitter3 *split3_new(const struct universe3 *);
+void	 split3_free(struct splitter3 *);
+void	 split3_addshell(struct splitter3 *, const struct shell *);
+size_t	 split3_root(struct splitter3 *, int *);
+void	 split3_children(struct splitter3 *, int, uint64_t, uint64_t,
+	    uint64_t, size_t, int, int[8]);
+size_t	 split3_child(struct splitter3 *, int, size_t, int);
 
 #endif

@@ -18,6 +18,7 @@
 #include "celltext.h"
 #include "inline.h"
 #include "reader.h"
+#include "solidio.h"
 
 #define MAXLINE	(1 << 20)	/* bytes of a line, its newline excluded */
 /*
@@ -611,7 +612,12 @@ header(struct qtreader *r, const char *line)
 {
 	if (strncmp(line, "qtree ", 6) != 0)
 		qt_fail(r, "not a qtree stream (no qtree header)");
-	if (strcmp(line + 6, "1") != 0)
+	if (strcmp(line + 6, "1 3") == 0 && r->state == BEFORE_HEADER) {
+		if (!(r->flags & QT_SOLIDS))
+			qt_fail(r, "a 3D stream (qtree 1 3): %s reads 2D "
+			    "streams only", progname);
+		r->solid = 1;
+	} else if (strcmp(line + 6, "1") != 0)
 		qt_fail(r, "unsupported qtree version: %s", line + 6);
 	r->state = IN_BODY;
 }
@@ -865,6 +871,8 @@ readrecord(struct qtreader *r, struct qtrec *rec)
 		switch (r->state) {
 		case BEFORE_HEADER:
 			header(r, line);
+			if (r->solid)
+				return rec->kind = QT_SOLID;	/* qt3_open */
 			break;
 		case AFTER_END:
 			qt_fail(r, "data after the end record");
@@ -880,6 +888,43 @@ readrecord(struct qtreader *r, struct qtrec *rec)
 			return kind;
 		}
 	}
+}
+
+/*
+ * For read3.c: the next line that is not a comment, checked as any, or
+ * NULL at the end of the input; and fields as the 2D records' are read.
+ */
+char *
+qt_rawline(struct qtreader *r, size_t *len)
+{
+	char *line;
+
+	do {
+		if ((line = readline(r, len)) == NULL)
+			return NULL;
+		r->lineno++;
+		checkline(r, line, *len);
+	} while (line[0] == '#');
+	return line;
+}
+
+long
+qt_lineno(const struct qtreader *r)
+{
+	return r->lineno;
+}
+
+double
+qt_realfield(struct qtreader *r, const char *s, const char *what)
+{
+	return read_realfield(r, s, what);
+}
+
+long long
+qt_intfield(struct qtreader *r, const char *s, const char *what,
+    long long lo, long long hi)
+{
+	return read_intfield(r, s, what, lo, hi);
 }
 
 /*

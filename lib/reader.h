@@ -26,6 +26,7 @@ struct qtreader {
 	char		*field[NFIELD];
 	int		 nfield;
 	int		 haveuniverse, havelevel, havecells;
+	int		 solid;		/* a 3D stream, for read3.c */
 	int		 deepest;	/* the deepest cell's level, -1 before one */
 	struct universe	 u;
 	int		 ulevels;	/* the universe's deepest level */

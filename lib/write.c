@@ -11,6 +11,7 @@
 
 #include "qtree.h"
 #include "celltext.h"
+#include "solidio.h"
 
 /*
  * Cells take their texts from the cell text cache.  A mesh's vertices,
@@ -478,6 +479,14 @@ qt_op(const struct qtop *op)
 	}
 	*p++ = '\n';
 	recorded(p);
+}
+
+/* For write3.c: bytes of k records. */
+void
+qt_putrecords(const char *s, size_t n, unsigned long long k)
+{
+	put(s, n);
+	w.written += k;
 }
 
 /* A record as read: a ring with its v records, anything else alone. */

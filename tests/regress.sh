@@ -131,6 +131,19 @@ cases() {
 	echo "amoeba13.qt2svg|polyread samples/amoeba.brep | qtsplit -l 13 | qt2svg | cksum"
 	echo "amoeba16.qtbalance|polyread samples/amoeba.brep | qtsplit -l 16 | qtbalance | cksum"
 	echo "amoeba30.qtsplit-r|polyread samples/amoeba.brep | qtsplit -l 30 -r 1203012 | cksum"
+	# Solids: the stream, its octree, its figures.
+	for f in tests/solids/cube.off tests/solids/tetra.off \
+	    tests/solids/octa.off tests/solids/void.off; do
+		b=${f##*/}
+		echo "$b.polyread|polyread $f"
+		echo "$b.qtsplit|polyread -u -1.5,-1.25,-1,8 $f | qtsplit -l 4"
+		echo "$b.qtsplit-m|polyread -u -1.5,-1.25,-1,8 $f | qtsplit -l 4 -m 2 -r 0"
+		echo "$b.qtstats|polyread -u -1.5,-1.25,-1,8 $f | qtsplit -l 5 | qtstats -l"
+	done
+	for f in tests/solids/bowtie.off tests/solids/flipped.off \
+	    tests/solids/openbox.off tests/solids/twocubes.off; do
+		echo "${f##*/}.polyread|polyread $f 2>&1; echo \$?"
+	done
 	# Every bad input through every program that reads its kind.
 	for f in tests/bad/*; do
 		b=${f##*/}

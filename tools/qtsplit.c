@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "qtree.h"
+#include "qtsplit.h"
 
 /* One -L: ring id's level, or every hole's for id 0. */
 struct ringlevel {
@@ -188,7 +189,7 @@ visit(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
  * Reads the stream: its universe, its level, the rings' edges; the rings
  * and any other records are kept to be written as read, rings first.
  */
-static void
+static int
 readrings(struct qtreader *r)
 {
 	struct qtrec rec;
@@ -196,6 +197,8 @@ readrings(struct qtreader *r)
 
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
+		case QT_SOLID:
+			return 1;	/* a 3D stream: qtsplit3.c reads it */
 		case QT_UNIVERSE:
 			in.u = rec.u;
 			in.sp = split_new(&in.u);
@@ -224,6 +227,7 @@ readrings(struct qtreader *r)
 			break;
 		}
 	}
+	return 0;
 }
 
 /* -L RING=LEVEL: RING a ring's id or "holes". */
@@ -447,8 +451,13 @@ main(int argc, char *argv[])
 		usage(0);
 
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
-	    QT_NEEDUNIVERSE | QT_ARCS);
-	readrings(r);
+	    QT_NEEDUNIVERSE | QT_ARCS | QT_SOLIDS);
+	if (readrings(r)) {
+		struct split3opts o = { opt.minlevel, opt.maxlevel, opt.cut,
+		    opt.cutopt, subtree, opt.verbose, opt.nrl };
+
+		return split3main(r, &o);
+	}
 	qt_close(r);
 	checklevels();
 	if (opt.minlevel > opt.maxlevel)

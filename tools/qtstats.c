@@ -13,9 +13,12 @@
 #include <unistd.h>
 
 #include "qtree.h"
+#include "qtstats.h"
 
 
 enum { F, E, P };
+
+int stats3table;
 
 /* The polygon, summed ring by ring as its records stream past. */
 static struct polygon {
@@ -550,6 +553,8 @@ readstream(struct qtreader *r)
 
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
+		case QT_SOLID:	/* a 3D stream: qtstats3.c */
+			exit(stats3main(r, stats3table));
 		case QT_UNIVERSE:
 			tree.u = rec.u;
 			tree.haveuniverse = 1;
@@ -1643,7 +1648,7 @@ main(int argc, char *argv[])
 	while ((ch = getopt(argc, argv, "lmsvh")) != -1)
 		switch (ch) {
 		case 'l':
-			table = 1;
+			table = stats3table = 1;
 			break;
 		case 'm':
 			merged = 1;
@@ -1675,7 +1680,7 @@ main(int argc, char *argv[])
 		return 0;
 	}
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
-	    QT_ARCS | (verbose ? QT_VERBOSE : 0));
+	    QT_ARCS | QT_SOLIDS | (verbose ? QT_VERBOSE : 0));
 	readstream(r);
 	if (sums.on)
 		sumsreport(qt_name(r));

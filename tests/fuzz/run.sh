@@ -78,8 +78,8 @@ wait_builds() {
 	pending=
 }
 building build polyread tools/polyread/*.c
-building build qtsplit tools/qtsplit.c
-building build qtstats tools/qtstats.c
+building build qtsplit tools/qtsplit.c tools/qtsplit3.c
+building build qtstats tools/qtstats.c tools/qtstats3.c
 building build qtleaves tools/qtleaves.c
 building build qtbalance tools/qtbalance.c
 building build qtmesh tools/qtmesh/*.c
@@ -143,7 +143,7 @@ fuzzone() {
 # CPU), each lane running its share one after another, so that a run of
 # 14 targets of FUZZTIME seconds takes 14 / FUZZJOBS of them.
 targets=${FUZZTARGETS:-brep xy wkt poly csv geojson qtree cells numbered \
-    balance qtmesh qtcat qtbool mesh}
+    balance qtmesh qtcat qtbool mesh off stl obj ply}
 jobs=${FUZZJOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
 [ -z "${FUZZCPU:-}" ] || jobs=1
 lane=0

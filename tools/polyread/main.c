@@ -1,7 +1,9 @@
 /*
  * polyread: read polygons in brep, xy, wkt, Triangle poly, csv or GeoJSON
  * form, check that they make a valid region, and write them as a qtree(5)
- * stream of rings: outer rings counter-clockwise, holes clockwise.
+ * stream of rings: outer rings counter-clockwise, holes clockwise.  Or a
+ * solid's surface in OFF, STL, OBJ or PLY form, checked and written as a
+ * 3D stream of shells, outward (solid3.c).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,6 +34,14 @@ static const struct format formats[] = {
 	    "the first line is two fields separated by a comma" },
 	{ "geojson",	isgeojson, parsegeojson,
 	    "the input starts with '{'" },
+	{ "off",	isoff,	parseoff,
+	    "the first line is OFF" },
+	{ "stl",	isstl,	parsestl,
+	    "the input starts with solid and has facets, or is binary" },
+	{ "obj",	isobj,	parseobj,
+	    "the first word is an OBJ statement (v, f, ...)" },
+	{ "ply",	isply,	parseply,
+	    "the first line is ply" },
 };
 #define NFORMATS	(sizeof(formats) / sizeof(formats[0]))
 
@@ -65,7 +75,7 @@ detect(struct src *s)
 {
 	const struct format *f = &formats[NFORMATS - 1];
 
-	if (!skipspace(s))
+	if (!skipspace(s) && s->nulline == 0)
 		errat(s->name, lastline(s), "no polygon in the input");
 	while (!f->detect(s))
 		f--;
@@ -114,6 +124,8 @@ readinput(struct input *in, const char *path, const struct format *forced,
 	if (choosing && f->parse != parsegeojson)
 		die(2, "-F: %s is read as %s: only GeoJSON has features",
 		    s.name, f->name);
+	if (s.nulline > 0 && f->parse != parsestl && f->parse != parseply)
+		errat(s.name, s.nulline, "NUL byte in input");
 	s.p = s.buf;
 	s.line = 1;
 	f->parse(&s, in);
@@ -178,7 +190,7 @@ main(int argc, char *argv[])
 	const struct format *forced = NULL;
 	struct input in;
 	struct universe optu, u;
-	const char *end, *msg;
+	const char *end, *msg, *uarg = NULL;
 	long long level = -1;
 	int ch, i, haveoptu = 0, choosing = 0;
 
@@ -199,7 +211,7 @@ main(int argc, char *argv[])
 				    "%d: %s", QT_MAXLEVEL, optarg);
 			break;
 		case 'u':
-			parseuniverse(optarg, &optu);
+			uarg = optarg;
 			haveoptu = 1;
 			break;
 		case 'v':
@@ -215,9 +227,19 @@ main(int argc, char *argv[])
 	in.level = -1;
 	for (i = 0; i == 0 || i < argc; i++)
 		readinput(&in, argc > 0 ? argv[i] : "-", forced, choosing);
+	if (in.solid != NULL) {
+		if (in.nrings > 0)
+			die(1, "2D and 3D inputs mixed: polyread reads "
+			    "polygons or a solid, not both");
+		check3(&in);
+		write3(&in, uarg, level);
+		closeout();
+		return 0;
+	}
 	check(&in);
 	/* -u wins over a universe the input declares, as polyread(1) says */
 	if (haveoptu) {
+		parseuniverse(uarg, &optu);
 		u = optu;
 		checkuniverse(&in, &u, "given with -u");
 	} else if (in.haveuniverse) {

@@ -34,8 +34,30 @@ struct seed {
 	long		 line;
 };
 
+/*
+ * A solid's surface as read (solid3.c): triangles of vertices counted
+ * from 0 over all inputs, each triangle with the file and line that gave
+ * it; polygons come fanned into triangles.
+ */
+struct face3 {
+	size_t		 v[3];
+	const char	*file;
+	long		 line;
+	size_t		 poly;		/* the input's face it was fanned from */
+};
+
+struct solid3 {
+	struct point3	*v;
+	long		*vline;
+	size_t		 nv, vcap;
+	struct face3	*f;
+	size_t		 nf, fcap;
+	size_t		 npoly;
+};
+
 /* Everything the inputs gave, all files together. */
 struct input {
+	struct solid3	*solid;		/* a 3D input's, else NULL */
 	struct inring	*rings;
 	size_t		 nrings, ringcap;
 	unsigned long long nvertices;
@@ -63,6 +85,7 @@ struct src {
 	const char	*name;
 	char		*buf;
 	size_t		 len;
+	long		 nulline;	/* of a NUL byte a binary input may hold */
 	char		*p;
 	long		 line;
 	long		 cutline;	/* of a number the input ends in */
@@ -121,6 +144,27 @@ void	 parsecsv(struct src *, struct input *);
 int	 isgeojson(const struct src *);
 void	 parsegeojson(struct src *, struct input *);
 void	 choosefeature(const char *);
+
+/*
+ * The 3D formats (off.c, stl.c, obj.c, ply.c) and what they build with
+ * (solid3.c): addpoint3 gives the point's number, addpoly3 fans a polygon
+ * of n of them into triangles.  check3 checks that the surface bounds a
+ * solid, write3 writes it as a 3D stream, outward.
+ */
+int	 isoff(const struct src *);
+void	 parseoff(struct src *, struct input *);
+int	 isstl(const struct src *);
+void	 parsestl(struct src *, struct input *);
+int	 isobj(const struct src *);
+void	 parseobj(struct src *, struct input *);
+int	 isply(const struct src *);
+void	 parseply(struct src *, struct input *);
+void	 restofline(struct src *);
+size_t	 addpoint3(struct input *, const char *, long, double, double,
+	    double);
+void	 addpoly3(struct input *, const char *, long, const size_t *, size_t);
+void	 check3(struct input *);
+void	 write3(struct input *, const char *, int);
 
 /*
  * touch.c: addtouch records that two rings touch at a point, taketouches

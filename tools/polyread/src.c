@@ -56,6 +56,35 @@ longlines(const struct src *s)
 }
 
 /*
+ * Whether an input with a NUL byte at nul may be binary STL or PLY: PLY
+ * says so on its first line, and binary STL has one in its header or its
+ * count (its 84 bytes) or in its first triangle's floats.
+ */
+static int
+maybinary(const struct src *s, const char *nul)
+{
+	return strncmp(s->buf, "ply\n", 4) == 0 ||
+	    strncmp(s->buf, "ply\r\n", 5) == 0 || nul - s->buf < 134;
+}
+
+/*
+ * Whether an input taken for binary STL has run past the length its count
+ * gives: then it is none, and no more of it is read (/dev/zero says 0).
+ */
+static int
+pastbinary(const struct src *s)
+{
+	const unsigned char *b = (const unsigned char *)s->buf;
+	unsigned long long n;
+
+	if (s->len < 84 || strncmp(s->buf, "ply", 3) == 0)
+		return 0;
+	n = (unsigned long long)b[80] | (unsigned long long)b[81] << 8 |
+	    (unsigned long long)b[82] << 16 | (unsigned long long)b[83] << 24;
+	return s->len > 84 + 50 * n;
+}
+
+/*
  * Reads an input whole, checking each block as it comes, so that neither
  * a NUL byte nor a line without end makes it read on: a block holds at
  * most LINEMAX bytes, so a longer line runs past a block's end.
@@ -76,6 +105,7 @@ readall(struct src *s, const char *path)
 	s->buf = xmalloc(cap);
 	hugepage_hint(s->buf, cap);	/* read into once: 2 MB faults, not 4 KB */
 	s->len = 0;
+	s->nulline = 0;
 	for (;;) {
 		if (cap - s->len - 1 == 0) {
 			cap *= 2;
@@ -88,8 +118,16 @@ readall(struct src *s, const char *path)
 			break;
 		p = s->buf + s->len;
 		s->len += n;
-		if ((nl = memchr(p, '\0', n)) != NULL)
-			errat(s->name, lineat(s, nl), "NUL byte in input");
+		if (s->nulline == 0 && (nl = memchr(p, '\0', n)) != NULL) {
+			/* binary STL and PLY hold them; main asks the format */
+			if (!maybinary(s, nl))
+				errat(s->name, lineat(s, nl), "NUL byte in "
+				    "input");
+			s->nulline = lineat(s, nl);
+			longok = 1;
+		}
+		if (s->nulline > 0 && pastbinary(s))
+			errat(s->name, s->nulline, "NUL byte in input");
 		if (longok)
 			continue;
 		nl = memchr(p, '\n', n);

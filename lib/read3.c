@@ -1,0 +1,385 @@
+/*
+ * Reading the 3D streams of qtree(5): after read.c has read the header
+ * qtree 1 3, the same lines (read.c's, with their checks) hold a cube
+ * universe, shells of v X Y Z and f A B C records, and cells of eight
+ * children.  Every record is checked here; what qt3_read gives is valid.
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "qtree.h"
+#include "num.h"
+#include "solidio.h"
+
+#define NFIELD3	16
+
+struct qt3reader {
+	struct qtreader	*r;
+	unsigned long long count;	/* records, for the end record */
+	char		*field[NFIELD3];
+	int		 nfield;
+	int		 haveuniverse, havelevel, havecells, ended;
+	struct universe3 u;
+	int		 ulevels, level;
+	long		 nshells;
+	char		 path[QT_MAXLEVEL + 1];	/* the last cell's, "" root */
+	int		 pathlen, lastleaf;
+	struct shell	 shell;
+	size_t		 vcap, tcap;
+	char		*text;		/* a shell's records, as read */
+	size_t		 textlen, textcap;
+};
+
+struct qt3reader *
+qt3_open(struct qtreader *r)
+{
+	struct qt3reader *s = xcalloc(1, sizeof(*s));
+
+	s->r = r;
+	s->level = -1;
+	return s;
+}
+
+void
+qt3_close(struct qt3reader *s)
+{
+	if (s == NULL)
+		return;
+	free(s->shell.v);
+	free(s->shell.t);
+	free(s->text);
+	free(s);
+}
+
+static void
+nfields(struct qt3reader *s, int lo, int hi)
+{
+	if (s->nfield < lo || s->nfield > hi)
+		qt_fail(s->r, "%s record has %d fields, expected %d",
+		    s->field[0], s->nfield, hi);
+}
+
+/* Splits a line at single spaces, refusing empty fields; for good. */
+static void
+split(struct qt3reader *s, char *line)
+{
+	int n = 0, i;
+
+	for (;;) {
+		if (n == NFIELD3)
+			qt_fail(s->r, "too many fields");
+		s->field[n++] = line;
+		if ((line = strchr(line, ' ')) == NULL)
+			break;
+		*line++ = '\0';
+	}
+	s->nfield = n;
+	for (i = 0; i < n; i++)
+		if (s->field[i][0] == '\0')
+			qt_fail(s->r, "empty field (fields are separated by "
+			    "one space)");
+}
+
+static void
+unsplit(struct qt3reader *s)
+{
+	int i;
+
+	for (i = 1; i < s->nfield; i++)
+		s->field[i][-1] = ' ';
+}
+
+static void
+keeptext(struct qt3reader *s, const char *line, size_t n)
+{
+	s->text = xgrow(s->text, &s->textcap, s->textlen + n + 1, 1);
+	memcpy(s->text + s->textlen, line, n);
+	s->text[s->textlen + n] = '\n';
+	s->textlen += n + 1;
+}
+
+static void
+universerec(struct qt3reader *s, struct qt3rec *rec)
+{
+	const char *msg;
+
+	nfields(s, 5, 5);
+	if (s->haveuniverse)
+		qt_fail(s->r, "second universe record");
+	if (s->nshells > 0 || s->havecells)
+		qt_fail(s->r, "universe record after shells or cells");
+	rec->u.x0 = qt_realfield(s->r, s->field[1], "x0");
+	rec->u.y0 = qt_realfield(s->r, s->field[2], "y0");
+	rec->u.z0 = qt_realfield(s->r, s->field[3], "z0");
+	rec->u.size = qt_realfield(s->r, s->field[4], "size");
+	if (rec->u.size <= 0)
+		qt_fail(s->r, "universe size is not positive");
+	if ((msg = univ3check(&rec->u, s->havelevel ? s->level : -1)) != NULL)
+		qt_fail(s->r, "%s", msg);
+	s->u = rec->u;
+	s->ulevels = univ3deepest(&s->u);
+	s->haveuniverse = 1;
+}
+
+static void
+levelrec(struct qt3reader *s, struct qt3rec *rec)
+{
+	const char *msg;
+
+	nfields(s, 2, 2);
+	if (s->havelevel)
+		qt_fail(s->r, "second level record");
+	if (s->havecells)
+		qt_fail(s->r, "level record after cells");
+	rec->level = qt_intfield(s->r, s->field[1], "level", 0, QT_MAXLEVEL);
+	if (s->haveuniverse && (msg = univ3check(&s->u, rec->level)) != NULL)
+		qt_fail(s->r, "%s", msg);
+	s->level = rec->level;
+	s->havelevel = 1;
+}
+
+/* A v record of the shell being read. */
+static void
+vrec(struct qt3reader *s, size_t i)
+{
+	struct point3 *p = &s->shell.v[i];
+
+	if (s->nfield != 4 || strcmp(s->field[0], "v") != 0)
+		qt_fail(s->r, "shell %ld has %zu vertices, this is not its "
+		    "v record %zu (v X Y Z)", s->shell.id, s->shell.nv, i + 1);
+	p->x = qt_realfield(s->r, s->field[1], "x");
+	p->y = qt_realfield(s->r, s->field[2], "y");
+	p->z = qt_realfield(s->r, s->field[3], "z");
+}
+
+/* An f record: three different vertices of the shell, counted from 1. */
+static void
+frec(struct qt3reader *s, size_t k)
+{
+	size_t *t = &s->shell.t[3 * k];
+	int i;
+
+	if (s->nfield != 4 || strcmp(s->field[0], "f") != 0)
+		qt_fail(s->r, "shell %ld has %zu faces, this is not its "
+		    "f record %zu (f A B C)", s->shell.id, s->shell.nt, k + 1);
+	for (i = 0; i < 3; i++)
+		t[i] = qt_intfield(s->r, s->field[i + 1], "vertex number", 1,
+		    (long long)s->shell.nv) - 1;
+	if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+		qt_fail(s->r, "face %zu of shell %ld repeats a vertex", k + 1,
+		    s->shell.id);
+}
+
+/*
+ * shell ID KIND NV NT, then its NV v records and NT f records, read here
+ * whole: a shell comes as one record, its text kept for qt3_echo.
+ */
+static void
+shellrec(struct qt3reader *s, struct qt3rec *rec, char *line, size_t len)
+{
+	struct shell *g = &s->shell;
+	size_t i;
+	char *l;
+
+	nfields(s, 5, 5);
+	if (!s->haveuniverse)
+		qt_fail(s->r, "shell record before the universe record");
+	if (s->havecells)
+		qt_fail(s->r, "shell record after cells");
+	g->id = qt_intfield(s->r, s->field[1], "shell id", 1,
+	    (long long)1 << 40);
+	if (g->id != s->nshells + 1)
+		qt_fail(s->r, "shell %ld follows shell %ld", g->id, s->nshells);
+	if (strcmp(s->field[2], "outer") == 0)
+		g->cavity = 0;
+	else if (strcmp(s->field[2], "cavity") == 0)
+		g->cavity = 1;
+	else
+		qt_fail(s->r, "shell kind is not outer or cavity: %s",
+		    s->field[2]);
+	g->nv = qt_intfield(s->r, s->field[3], "vertex count", 4,
+	    (long long)1 << 40);
+	g->nt = qt_intfield(s->r, s->field[4], "face count", 4,
+	    (long long)1 << 40);
+	rec->lineno = qt_lineno(s->r);
+	unsplit(s);
+	s->textlen = 0;
+	keeptext(s, line, len);
+	/* grown as records arrive, so that a count alone costs nothing */
+	for (i = 0; i < g->nv + g->nt; i++) {
+		if ((l = qt_rawline(s->r, &len)) == NULL)
+			qt_fail(s->r, "truncated stream: shell %ld is missing "
+			    "%zu of its records", g->id, g->nv + g->nt - i);
+		keeptext(s, l, len);
+		split(s, l);
+		if (i < g->nv) {
+			s->shell.v = xgrow(s->shell.v, &s->vcap, i + 1,
+			    sizeof(*s->shell.v));
+			vrec(s, i);
+		} else {
+			s->shell.t = xgrow(s->shell.t, &s->tcap,
+			    3 * (i - g->nv + 1), sizeof(*s->shell.t));
+			frec(s, i - g->nv);
+		}
+	}
+	s->nshells++;
+	s->count += g->nv + g->nt;
+	rec->shell = *g;
+	rec->line = s->text;
+	rec->len = s->textlen - 1;
+	rec->nrec = 1 + g->nv + g->nt;
+	s->nfield = 0;
+}
+
+/*
+ * node PATH LEVEL IX IY IZ X Y Z SIZE and leaf ... CLASS, in preorder:
+ * paths in the C locale's order, a cell never inside the leaf before it.
+ */
+static void
+cellrec(struct qt3reader *s, struct qt3rec *rec)
+{
+	struct cell3 *c = &rec->c;
+	const char *path = s->field[1], *p = NULL;
+	uint64_t ix, iy, iz;
+	unsigned long long lim;
+	double h, x, y, z, size;
+	int level;
+
+	nfields(s, rec->kind == QT_LEAF ? 11 : 10, rec->kind == QT_LEAF ?
+	    11 : 10);
+	if (!s->haveuniverse)
+		qt_fail(s->r, "%s record before the universe record",
+		    s->field[0]);
+	level = qt_intfield(s->r, s->field[2], "level", 0, QT_MAXLEVEL);
+	if (level > s->ulevels)
+		qt_fail(s->r, "%s", univ3check(&s->u, level));
+	if (pathcell3(path, level, &ix, &iy, &iz) < 0)
+		qt_fail(s->r, "path %s does not fit level %d (digits 0 to 7)",
+		    path, level);
+	p = level > 0 ? path : "";
+	if (s->havecells) {
+		if (strcmp(p, s->path) <= 0)
+			qt_fail(s->r, "cell %s does not follow cell %s in "
+			    "preorder", path, s->pathlen > 0 ? s->path : ".");
+		if (s->lastleaf && strncmp(p, s->path, s->pathlen) == 0)
+			qt_fail(s->r, "cell %s lies inside leaf %s", path,
+			    s->pathlen > 0 ? s->path : ".");
+	}
+	memcpy(s->path, p, level + 1);
+	s->pathlen = level;
+	s->lastleaf = rec->kind == QT_LEAF;
+	s->havecells = 1;
+	lim = ((unsigned long long)1 << level) - 1;
+	c->ix = qt_intfield(s->r, s->field[3], "ix", 0, lim);
+	c->iy = qt_intfield(s->r, s->field[4], "iy", 0, lim);
+	c->iz = qt_intfield(s->r, s->field[5], "iz", 0, lim);
+	if (c->ix != ix || c->iy != iy || c->iz != iz)
+		qt_fail(s->r, "cell %s is at column %llu row %llu layer %llu, "
+		    "not %s %s %s", path, (unsigned long long)ix,
+		    (unsigned long long)iy, (unsigned long long)iz,
+		    s->field[3], s->field[4], s->field[5]);
+	h = cell_coord(0, s->u.size, level, 1);
+	x = cell_coord(s->u.x0, s->u.size, level, ix);
+	y = cell_coord(s->u.y0, s->u.size, level, iy);
+	z = cell_coord(s->u.z0, s->u.size, level, iz);
+	c->x = qt_realfield(s->r, s->field[6], "x");
+	c->y = qt_realfield(s->r, s->field[7], "y");
+	c->z = qt_realfield(s->r, s->field[8], "z");
+	size = qt_realfield(s->r, s->field[9], "size");
+	if (c->x != x || c->y != y || c->z != z || size != h) {
+		char b[4][32];
+
+		fmtreal(b[0], x);
+		fmtreal(b[1], y);
+		fmtreal(b[2], z);
+		fmtreal(b[3], h);
+		qt_fail(s->r, "cell %s lies at %s %s %s size %s in this "
+		    "universe", path, b[0], b[1], b[2], b[3]);
+	}
+	c->size = h;
+	c->level = level;
+	c->path = level > 0 ? s->path : ".";
+	c->class = 0;
+	if (rec->kind == QT_LEAF) {
+		const char *k = s->field[10];
+
+		if ((k[0] != 'F' && k[0] != 'E' && k[0] != 'P') || k[1] != '\0')
+			qt_fail(s->r, "leaf class is not F, E or P: %s", k);
+		c->class = k[0];
+	}
+}
+
+static void
+endrec(struct qt3reader *s, const char *line)
+{
+	const char *end;
+	long long count;
+
+	if (strncmp(line, "end ", 4) != 0 ||
+	    parselong(line + 4, &end, &count) < 0 || *end != '\0')
+		qt_fail(s->r, "malformed end record");
+	if (count < 0 || (unsigned long long)count != s->count)
+		qt_fail(s->r, "end record counts %lld records, the stream "
+		    "has %llu", count, s->count);
+	if (!s->haveuniverse)
+		qt_fail(s->r, "no universe record");
+	s->ended = 1;
+}
+
+enum qtkind
+qt3_read(struct qt3reader *s, struct qt3rec *rec)
+{
+	char *line;
+	size_t len, taglen;
+
+	for (;;) {
+		if ((line = qt_rawline(s->r, &len)) == NULL) {
+			if (!s->ended)
+				qt_fail(s->r, "truncated stream: no end record");
+			return QT_EOF;
+		}
+		if (s->ended)
+			qt_fail(s->r, "data after the end record");
+		taglen = strcspn(line, " ");
+		if (taglen == 3 && strncmp(line, "end", 3) == 0) {
+			endrec(s, line);
+			continue;
+		}
+		if (taglen == 0)
+			qt_fail(s->r, "record without a tag");
+		if (taglen == 5 && strncmp(line, "qtree", 5) == 0)
+			qt_fail(s->r, "qtree header inside the stream");
+		break;
+	}
+	s->count++;
+	rec->line = line;
+	rec->len = len;
+	rec->lineno = qt_lineno(s->r);
+	rec->nrec = 1;
+	split(s, line);
+	if (strcmp(s->field[0], "universe") == 0) {
+		rec->kind = QT_UNIVERSE;
+		universerec(s, rec);
+	} else if (strcmp(s->field[0], "level") == 0) {
+		rec->kind = QT_LEVEL;
+		levelrec(s, rec);
+	} else if (strcmp(s->field[0], "shell") == 0) {
+		rec->kind = QT_SHELL;
+		shellrec(s, rec, line, len);
+	} else if (strcmp(s->field[0], "node") == 0 ||
+	    strcmp(s->field[0], "leaf") == 0) {
+		rec->kind = s->field[0][0] == 'l' ? QT_LEAF : QT_NODE;
+		cellrec(s, rec);
+	} else if (strcmp(s->field[0], "v") == 0 ||
+	    strcmp(s->field[0], "f") == 0) {
+		qt_fail(s->r, "%s record outside a shell", s->field[0]);
+	} else if (strcmp(s->field[0], "ring") == 0) {
+		qt_fail(s->r, "ring record in a 3D stream (rings bound 2D "
+		    "regions; solids have shells)");
+	} else
+		rec->kind = QT_OTHER;
+	unsplit(s);
+	return rec->kind;
+}

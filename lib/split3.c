@@ -1,0 +1,361 @@
+/*
+ * The exact classifier of 3D cells, split.c's in space.
+ *
+ * A cube is partial when a triangle meets its open interior: no axis of
+ * the separating axis theorem (the cube's three, the triangle's normal,
+ * and the nine products of an edge with an axis) parts them, each test a
+ * set of exact signs (coordinate comparisons, orient3d, arc_crossdir of the
+ * points projected along an axis).  A closed triangle and an open box are
+ * apart exactly when one of these axes has the triangle's projection on
+ * one side of the box's open one, touching allowed.
+ *
+ * A cube without triangles is full or empty by the even-odd parity of its
+ * lowest corner c + d, d = (e, e^2, e^3) infinitesimal (lib/solid.c):
+ * each child's point is reached from its parent's along the children's
+ * edges (x, then y, then z), each path shifted by d into the parent's open
+ * interior, where only the parent's triangles lie; the parity flips at
+ * each triangle the path crosses.  A triangle crosses the path from p to q
+ * along an axis when the line through p + d along the axis passes through
+ * it and orient3d at p + d and q + d differ.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "qtree.h"
+
+struct tri {
+	struct point3	 v[3];
+	double		 lo[3], hi[3];
+};
+
+struct worklist3 {
+	uint32_t	*tris;
+	unsigned char	*masks;
+	size_t		 cap;
+};
+
+struct splitter3 {
+	struct universe3 u;
+	double		 step[QT_MAXLEVEL + 1];
+	struct tri	*tris;
+	size_t		 ntris;
+	struct worklist3 list[QT_MAXLEVEL + 2];
+};
+
+struct splitter3 *
+split3_new(const struct universe3 *u)
+{
+	struct splitter3 *sp = xcalloc(1, sizeof(*sp));
+	int i;
+
+	sp->u = *u;
+	for (i = 0; i <= QT_MAXLEVEL; i++)
+		sp->step[i] = ldexp(u->size, -i);
+	return sp;
+}
+
+void
+split3_free(struct splitter3 *sp)
+{
+	int i;
+
+	if (sp == NULL)
+		return;
+	for (i = 0; i < QT_MAXLEVEL + 2; i++) {
+		free(sp->list[i].tris);
+		free(sp->list[i].masks);
+	}
+	free(sp->tris);
+	free(sp);
+}
+
+static double
+coord(struct point3 p, int axis)
+{
+	return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
+}
+
+void
+split3_addshell(struct splitter3 *sp, const struct shell *g)
+{
+	size_t k;
+	int i, a;
+
+	if (sp->ntris + g->nt > UINT32_MAX)
+		die(1, "too many triangles: %zu", sp->ntris + g->nt);
+	sp->tris = xreallocarray(sp->tris, sp->ntris + g->nt,
+	    sizeof(*sp->tris));
+	for (k = 0; k < g->nt; k++) {
+		struct tri *t = &sp->tris[sp->ntris++];
+
+		for (i = 0; i < 3; i++)
+			t->v[i] = g->v[g->t[3 * k + i]];
+		for (a = 0; a < 3; a++) {
+			double c0 = coord(t->v[0], a), c1 = coord(t->v[1], a);
+			double c2 = coord(t->v[2], a);
+
+			t->lo[a] = fmin(c0, fmin(c1, c2));
+			t->hi[a] = fmax(c0, fmax(c1, c2));
+		}
+	}
+}
+
+static void
+reserve(struct splitter3 *sp, int level, size_t n)
+{
+	struct worklist3 *l = &sp->list[level];
+
+	if (n <= l->cap)
+		return;
+	l->cap = n + n / 2 + 16;
+	l->tris = xreallocarray(l->tris, l->cap, sizeof(*l->tris));
+	l->masks = xreallocarray(l->masks, l->cap, sizeof(*l->masks));
+}
+
+static struct point3
+pt3(double x, double y, double z)
+{
+	struct point3 p;
+
+	p.x = x, p.y = y, p.z = z;
+	return p;
+}
+
+/* (3 + 16 eps) eps: orient2d's bound, which holds for any (a - b)(c - d) - (e - f)(g - h). */
+#define CROSS_BOUND	(3.3306690738754716e-16)
+
+/*
+ * The sign of cross(q - p, t - k) in the plane across axis (u, v its
+ * other two), filtered: exact arithmetic only when the bound cannot tell.
+ */
+static int
+crosssign(struct point3 p, struct point3 q, struct point3 k, struct point3 t,
+    int axis, int u, int v)
+{
+	double l = (coord(q, u) - coord(p, u)) * (coord(t, v) - coord(k, v));
+	double r = (coord(q, v) - coord(p, v)) * (coord(t, u) - coord(k, u));
+	double det = l - r, bound = CROSS_BOUND * (fabs(l) + fabs(r));
+
+	if (det > bound)
+		return 1;
+	if (-det > bound)
+		return -1;
+	return crossdir3(p, q, k, t, axis);
+}
+
+/*
+ * Whether triangle t meets the open box lo..hi.  o[8], when not NULL,
+ * holds orient3d at the box's corners (corner c at x bit c & 1, y bit
+ * c & 2, z bit c & 4), computed here when 2.
+ */
+static int
+meetsbox(const struct tri *t, const double lo[3], const double hi[3],
+    signed char o[8])
+{
+	signed char own[8];
+	int a, c, e, pos = 0, neg = 0;
+
+	for (a = 0; a < 3; a++)
+		if (t->hi[a] <= lo[a] || t->lo[a] >= hi[a])
+			return 0;
+	for (c = 0; c < 3; c++)	/* a corner inside: no axis can part them */
+		if (t->v[c].x > lo[0] && t->v[c].x < hi[0] && t->v[c].y > lo[1] &&
+		    t->v[c].y < hi[1] && t->v[c].z > lo[2] && t->v[c].z < hi[2])
+			return 1;
+	if (o == NULL) {
+		memset(own, 2, sizeof(own));
+		o = own;
+	}
+	for (c = 0; c < 8; c++) {
+		if (o[c] == 2)
+			o[c] = orient3d(t->v[0], t->v[1], t->v[2], pt3(c & 1 ?
+			    hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ?
+			    hi[2] : lo[2]));
+		pos |= o[c] > 0;
+		neg |= o[c] < 0;
+	}
+	if (!pos || !neg)
+		return 0;
+	for (e = 0; e < 3; e++) {
+		struct point3 p = t->v[e], q = t->v[(e + 1) % 3];
+		struct point3 r = t->v[(e + 2) % 3];
+
+		for (a = 0; a < 3; a++) {
+			int u = a == 0 ? 1 : 0, v = a == 2 ? 1 : 2;
+
+			pos = neg = 0;
+			if (coord(p, u) == coord(q, u) &&
+			    coord(p, v) == coord(q, v))
+				continue;	/* the edge runs along the axis */
+			for (c = 0; c < 4 && !(pos && neg); c++) {
+				double cc[3];
+				struct point3 k;
+				int s1, s2;
+
+				cc[a] = 0;
+				cc[u] = c & 1 ? hi[u] : lo[u];
+				cc[v] = c & 2 ? hi[v] : lo[v];
+				k = pt3(cc[0], cc[1], cc[2]);
+				/* the signs of L.(p - k) and L.(r - k) */
+				s1 = crosssign(p, q, k, p, a, u, v);
+				s2 = crosssign(p, q, k, r, a, u, v);
+				pos |= s1 > 0 || s2 > 0;
+				neg |= s1 < 0 || s2 < 0;
+			}
+			if (!pos || !neg)
+				return 0;
+		}
+	}
+	return 1;
+}
+
+static int
+rootparity(const struct splitter3 *sp)
+{
+	struct point3 p = pt3(sp->u.x0, sp->u.y0, sp->u.z0);
+	size_t i;
+	int inside = 0;
+
+	for (i = 0; i < sp->ntris; i++)
+		inside ^= ray3_crosses(sp->tris[i].v[0], sp->tris[i].v[1],
+		    sp->tris[i].v[2], p);
+	return inside;
+}
+
+size_t
+split3_root(struct splitter3 *sp, int *inside)
+{
+	double lo[3] = { sp->u.x0, sp->u.y0, sp->u.z0 }, hi[3];
+	size_t i, n = 0;
+	int a;
+
+	for (a = 0; a < 3; a++)
+		hi[a] = lo[a] + sp->u.size;
+	*inside = rootparity(sp);
+	reserve(sp, 0, sp->ntris);
+	for (i = 0; i < sp->ntris; i++)
+		if (meetsbox(&sp->tris[i], lo, hi, NULL))
+			sp->list[0].tris[n++] = i;
+	return n;
+}
+
+/*
+ * The seven paths from the parent's point to the children's: child q's
+ * point comes from child from[q]'s along axis ax[q].
+ */
+static const int from[8] = { 0, 0, 0, 1, 0, 1, 2, 3 };
+static const int ax[8] = { -1, 0, 1, 1, 2, 2, 2, 2 };
+
+void
+split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
+    uint64_t iz, size_t n, int inside, int parity[8])
+{
+	const uint32_t *list = sp->list[level].tris;
+	unsigned char *mask = sp->list[level].masks;
+	double g[3][3], h = sp->step[level + 1];
+	uint64_t base[3] = { 2 * ix, 2 * iy, 2 * iz };
+	int flip[8] = { 0 }, a, k, q;
+	size_t j;
+
+	for (a = 0; a < 3; a++)
+		for (k = 0; k < 3; k++)
+			g[a][k] = (a == 0 ? sp->u.x0 : a == 1 ? sp->u.y0 :
+			    sp->u.z0) + (double)(base[a] + k) * h;
+	for (j = 0; j < n; j++) {
+		const struct tri *t = &sp->tris[list[j]];
+		/* orient3d at grid point (i, j, k), 27 of them; 2 unknown */
+		signed char s[27], nudged[8];
+		int in[3][2], m = 0;
+
+		memset(s, 2, sizeof(s));
+		memset(nudged, 2, sizeof(nudged));
+		for (a = 0; a < 3; a++) {
+			in[a][0] = t->lo[a] < g[a][1] && t->hi[a] > g[a][0];
+			in[a][1] = t->lo[a] < g[a][2] && t->hi[a] > g[a][1];
+		}
+		/*
+		 * Most triangles, once cubes are larger than they are, lie
+		 * strictly inside one child, away from every path.
+		 */
+		if (in[0][0] != in[0][1] && in[1][0] != in[1][1] &&
+		    in[2][0] != in[2][1]) {
+			int i0 = in[0][1], i1 = in[1][1], i2 = in[2][1];
+
+			if (t->lo[0] > g[0][i0] && t->hi[0] < g[0][i0 + 1] &&
+			    t->lo[1] > g[1][i1] && t->hi[1] < g[1][i1 + 1] &&
+			    t->lo[2] > g[2][i2] && t->hi[2] < g[2][i2 + 1]) {
+				mask[j] = 1 << (4 * i2 + 2 * i1 + i0);
+				continue;
+			}
+		}
+		for (q = 0; q < 8; q++) {
+			int bx = q & 1, by = q >> 1 & 1, bz = q >> 2, c;
+			double lo[3], hi[3];
+			signed char o[8];
+
+			if (!in[0][bx] || !in[1][by] || !in[2][bz])
+				continue;
+			lo[0] = g[0][bx], hi[0] = g[0][bx + 1];
+			lo[1] = g[1][by], hi[1] = g[1][by + 1];
+			lo[2] = g[2][bz], hi[2] = g[2][bz + 1];
+			for (c = 0; c < 8; c++)
+				o[c] = s[9 * (bz + (c >> 2)) + 3 * (by +
+				    (c >> 1 & 1)) + bx + (c & 1)];
+			if (meetsbox(t, lo, hi, o))
+				m |= 1 << q;
+			for (c = 0; c < 8; c++)
+				s[9 * (bz + (c >> 2)) + 3 * (by + (c >> 1 & 1)) +
+				    bx + (c & 1)] = o[c];
+		}
+		mask[j] = m;
+		/* the paths: child q's point from child from[q]'s */
+		for (q = 1; q < 8; q++) {
+			int p0 = from[q], d = ax[q], b0[3], b1[3];
+			struct point3 c0, c1;
+
+			b0[0] = p0 & 1, b0[1] = p0 >> 1 & 1, b0[2] = p0 >> 2;
+			b1[0] = q & 1, b1[1] = q >> 1 & 1, b1[2] = q >> 2;
+			/* the triangle's box must reach the path's line */
+			for (a = 0; a < 3; a++)
+				if (a != d && (t->lo[a] > g[a][b0[a]] ||
+				    t->hi[a] < g[a][b0[a]]))
+					break;
+			if (a < 3 || t->hi[d] < g[d][0] || t->lo[d] > g[d][1])
+				continue;
+			c0 = pt3(g[0][b0[0]], g[1][b0[1]], g[2][b0[2]]);
+			c1 = pt3(g[0][b1[0]], g[1][b1[1]], g[2][b1[2]]);
+			if (!axisline_meets(t->v[0], t->v[1], t->v[2], c0, d))
+				continue;
+			if (nudged[p0] == 2)
+				nudged[p0] = orient3d_nudged(t->v[0], t->v[1],
+				    t->v[2], c0);
+			if (nudged[q] == 2)
+				nudged[q] = orient3d_nudged(t->v[0], t->v[1],
+				    t->v[2], c1);
+			flip[q] ^= nudged[p0] != nudged[q];
+		}
+	}
+	parity[0] = inside;
+	for (q = 1; q < 8; q++)
+		parity[q] = parity[from[q]] ^ flip[q];
+}
+
+size_t
+split3_child(struct splitter3 *sp, int level, size_t n, int q)
+{
+	const uint32_t *list;
+	const unsigned char *mask;
+	uint32_t *out;
+	size_t k, m = 0;
+
+	reserve(sp, level + 1, n);
+	list = sp->list[level].tris;
+	mask = sp->list[level].masks;
+	out = sp->list[level + 1].tris;
+	for (k = 0; k < n; k++)
+		if (mask[k] >> q & 1)
+			out[m++] = list[k];
+	return m;
+}

@@ -1,0 +1,134 @@
+#!/usr/bin/env bats
+# qtsplit on 3D streams: octrees of solids, checked cell by cell against
+# tests/oracle/octclass.py (exact rationals, clipping and random rays),
+# and the volume law.
+
+load test_helper
+
+SOLIDS="$TOP/tests/solids"
+ORACLE="$TOP/tests/oracle/octclass.py"
+
+# The cells of a 3D stream as the oracle prints them.
+cells() {
+	awk '$1 == "node" { print $1, $2, $3, $4, $5, $6 }
+	    $1 == "leaf" { print $1, $2, $3, $4, $5, $6, $11 }' "$@"
+}
+
+# oracle SOLID LEVELS UNIVERSE...: qtsplit against the oracle.
+oracle() {
+	local f=$1 levels=$2 u l
+	shift 2
+	for u in "$@"; do
+		polyread ${u:+-u "$u"} "$SOLIDS/$f" > in.q3
+		for l in $levels; do
+			python3 "$ORACLE" "$l" < in.q3 > want
+			qtsplit -l "$l" in.q3 | cells | diff -u want - || {
+				echo "$f -u $u -l $l"; return 1; }
+		done
+	done
+}
+
+@test "the tetrahedron's octrees are the oracle's, levels 1 to 4" {
+	oracle tetra.off "1 2 3 4" "" -0.25,-0.5,-0.125,2 -1,-1,-1,4
+}
+
+@test "the octahedron's octrees are the oracle's, levels 1 to 4" {
+	oracle octa.off "1 2 3 4" -2,-2,-2,4 -1.5,-1.25,-1,3
+}
+
+@test "the cube's and the cube with a void's octrees are the oracle's" {
+	oracle cube.off "1 2 3 4" -1,-1,-1,4 -0.75,-0.5,-0.25,2
+	oracle void.off "1 2 3 4" "" -0.5,0,-0.25,8
+}
+
+@test "the cube [1, 3]^3 in the universe of side 4: all partial at level 1, none at 2" {
+	# at level 1 every child holds a corner of the cube inside it; at
+	# level 2 the cells have side 1 and the cube's faces lie on their
+	# sides: the 2 x 2 x 2 cells of [1, 3]^3 are full, the other 56 empty
+	sed '/^node/,$d' "$SOLIDS/cube-1.q3" > c.q3
+	echo "end 23" >> c.q3	# universe, level, 1 + 8 + 12 for the shell
+	qtsplit -l 1 c.q3 | awk '$1 == "leaf" { c[$11]++ } END { print c["P"] + 0, c["F"] + 0, c["E"] + 0 }' > got
+	echo "8 0 0" | diff -u - got
+	qtsplit -l 2 c.q3 | awk '$1 == "leaf" { c[$11]++ } END { print c["P"] + 0, c["F"] + 0, c["E"] + 0 }' > got
+	echo "0 8 56" | diff -u - got
+	# and its cells are the fixture's, written by hand
+	qtsplit -l 1 c.q3 | diff -u "$SOLIDS/cube-1.q3" -
+}
+
+@test "a universe that is the cube itself is one full leaf" {
+	polyread "$SOLIDS/cube.off" | qtsplit -l 3 | grep -E '^(node|leaf)' > got
+	echo "leaf . 0 0 0 0 0 0 0 1 F" | diff -u - got
+}
+
+@test "volume_full <= the polyhedron's volume <= volume_full_partial, levels 1 to 5" {
+	for s in tetra.off:-0.25,-0.5,-0.125,2 octa.off:-1.5,-1.25,-1,3 void.off:-0.5,0,-0.25,8; do
+		polyread -u "${s#*:}" "$SOLIDS/${s%%:*}" > in.q3
+		for l in 1 2 3 4 5; do
+			qtsplit -l $l in.q3 | awk '
+			    $1 == "shell" { s = $2; n = 0 }
+			    $1 == "v" { n++; x[n] = $2; y[n] = $3; z[n] = $4 }
+			    $1 == "f" { a = $2; b = $3; c = $4
+				d = x[a] * (y[b] * z[c] - z[b] * y[c])
+				d -= y[a] * (x[b] * z[c] - z[b] * x[c])
+				d += z[a] * (x[b] * y[c] - y[b] * x[c])
+				vol += d / 6 }
+			    $1 == "leaf" && $11 != "E" { v = $10 ^ 3; fp += v; if ($11 == "F") f += v }
+			    END { e = 1e-12 * vol	# the rounding of awk'"'"'s sum
+				if (!(f <= vol + e && vol - e <= fp)) {
+					printf "level %d: %.17g %.17g %.17g\n", '$l', f, vol, fp
+					exit 1 } }' ||
+			    { echo "$s"; return 1; }
+		done
+	done
+}
+
+@test "-m splits every cell down to its level, as the oracle does" {
+	polyread -u -2,-2,-2,4 "$SOLIDS/octa.off" > in.q3
+	python3 "$ORACLE" 2 2 < in.q3 > want
+	qtsplit -l 2 -m 2 in.q3 | cells | diff -u want -
+	python3 "$ORACLE" 3 2 < in.q3 > want
+	qtsplit -l 3 -m 2 in.q3 | cells | diff -u want -
+}
+
+@test "-r writes the subtree of one cell as the whole tree has it" {
+	polyread -u -1.5,-1.25,-1,3 "$SOLIDS/octa.off" > in.q3
+	qtsplit -l 4 in.q3 | cells > all
+	for p in 0 7 07 70 765; do
+		awk -v p="$p" '$2 ~ "^" p' all > want
+		qtsplit -l 4 -r "$p" in.q3 | cells | diff -u want - || {
+			echo "-r $p"; return 1; }
+	done
+}
+
+@test "-t and -s cut the tree: the top and the shards make the whole tree" {
+	polyread -u -1.5,-1.25,-1,3 "$SOLIDS/octa.off" > in.q3
+	qtsplit -l 4 in.q3 | grep -E '^(node|leaf)' > all
+	qtsplit -l 4 -t 2 in.q3 | grep -E '^(node|leaf)' > top
+	qtsplit -l 4 -s 2 in.q3 > roots
+	# -s lists the nodes at level 2 of -t's output
+	awk '$1 == "node" && $3 == 2 { print $2 }' top | diff -u - roots
+	# each shard's cells but its root, after its root in the top
+	while read -r line; do
+		echo "$line"
+		set -- $line
+		if [ "$1" = node ] && [ "$3" = 2 ]; then
+			qtsplit -l 4 -r "$2" in.q3 | grep -E '^(node|leaf)' | sed 1d
+		fi
+	done < top > joined
+	diff -u all joined
+}
+
+@test "qtsplit refuses -L and a path that is not a 3D cell's on a 3D stream" {
+	polyread "$SOLIDS/tetra.off" > in.q3
+	run -2 --separate-stderr qtsplit -L 1=3 in.q3
+	[ "$stderr" = "qtsplit: -L: a 3D stream has shells, not rings" ]
+	run -2 --separate-stderr qtsplit -r 8 in.q3
+	[ "$stderr" = "qtsplit: -r: not a cell path of a 3D stream: 8" ]
+	run -1 --separate-stderr qtsplit -l 2 "$SOLIDS/cube-1.q3"
+	[ "$stderr" = "qtsplit: $SOLIDS/cube-1.q3:25: the input already holds cells: qtsplit takes shells" ]
+}
+
+@test "qtsplit's 3D output reads back through the library" {
+	polyread -u -1.5,-1.25,-1,3 "$SOLIDS/octa.off" | qtsplit -l 3 > t.q3
+	"$TOP/tests/check/solidcat" t.q3 | diff -u t.q3 -
+}
