@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """p1solve: a P1 finite-element oracle for qtree(5) meshes.
 
-usage: p1solve.py [-n] [file]
+usage: p1solve.py [-np] [file]
 
 Reads the vertex and elem records of a qtree(5) stream (others are
 skipped), cuts each quad into two triangles along its shorter diagonal
@@ -15,6 +15,13 @@ alone uses; the others unknown.  Prints, one "key value" line each:
   boundary_nodes
   max_error     the largest |u_h - u| over the nodes
   max_u         the largest |u| over the nodes, to scale it
+
+-p solves Poisson's equation -lap u = f instead, u = sin(3x) sin(2y),
+f = 13 u, which is not harmonic: the load of each node is the integral
+of f times its hat function, f taken linear on each triangle (exact for
+linear f).  A harmonic u favours triangles near the equilateral lattice,
+on which P1's leading truncation term is a multiple of the bilaplacian of
+u, zero for harmonic u; this one does not.
 
 -n evaluates u at ((x - x0) / L, (y - y0) / L) instead, (x0, y0) the
 lower left corner of the vertices' bounding box and L its longer side:
@@ -84,12 +91,13 @@ def triangles(xy, elems):
 
 def main():
     try:
-        opts, args = getopt.getopt(sys.argv[1:], "n")
+        opts, args = getopt.getopt(sys.argv[1:], "np")
     except getopt.GetoptError:
-        die("usage: p1solve.py [-n] [file]")
+        die("usage: p1solve.py [-np] [file]")
     scaled = any(o == "-n" for o, _ in opts)
+    poisson = any(o == "-p" for o, _ in opts)
     if len(args) > 1:
-        die("usage: p1solve.py [-n] [file]")
+        die("usage: p1solve.py [-np] [file]")
     if not args or args[0] == "-":
         xy, elems = read(sys.stdin)
     else:
@@ -107,7 +115,10 @@ def main():
         p = (xy - lo) / size
     else:
         p = xy
-    exact = np.exp(p[:, 0]) * np.sin(p[:, 1])
+    if poisson:
+        exact = np.sin(3 * p[:, 0]) * np.sin(2 * p[:, 1])
+    else:
+        exact = np.exp(p[:, 0]) * np.sin(p[:, 1])
 
     # edges used by one triangle alone
     e = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]),
@@ -134,8 +145,18 @@ def main():
     free = np.flatnonzero(used & ~boundary)
     fixed = np.flatnonzero(boundary)
     u = exact.copy()
+    load = np.zeros(len(xy))
+    if poisson:
+        # f linear on a triangle of area A: node i gets A (2 f_i + f_j +
+        # f_k) / 12; with -n, u's second derivatives in the unscaled
+        # coordinates the matrix is built in are 1 / L^2 of the scaled ones
+        f = 13 * exact / (size * size if scaled else 1)
+        ft = f[t]
+        area = a2 / 2
+        w = area[:, None] * (ft + ft.sum(axis=1)[:, None]) / 12
+        np.add.at(load, t.ravel(), w.ravel())
     if len(free) > 0:
-        rhs = -k[free][:, fixed] @ exact[fixed]
+        rhs = load[free] - k[free][:, fixed] @ exact[fixed]
         u[free] = scipy.sparse.linalg.spsolve(
             k[free][:, free].tocsc(), rhs)
     err = np.abs(u - exact)[used]

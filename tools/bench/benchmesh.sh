@@ -193,27 +193,39 @@ fi
 QTARGS="-l 6"; row plate-hole samples/plate-hole.qt -l 6
 
 echo
-echo "# P1 convergence on the amoeba, uniform trees (qtsplit -m L -l L), u on the mesh scaled into the unit square"
-printf '%-24s %7s %9s %9s %6s %9s\n' mesher elems triangles P1err ratio 'err*tris'
-prev=
+echo "# P1 convergence on the amoeba, uniform trees (qtsplit -m L -l L), u on the mesh scaled into the unit square;"
+echo "# Laplace with u = exp(x) sin(y), harmonic, and Poisson (p1solve.py -p) with u = sin(3x) sin(2y), not"
+printf '%-24s %7s %9s %9s %6s %9s %9s %6s %9s\n' mesher elems triangles P1err ratio 'err*tris' \
+    Poisson ratio 'err*tris'
+# One row: name, elements, then the two p1solve outputs and the errors before.
+p1row() {
+	awk -v name="$1" -v n="$2" -v prev="$5" -v prevp="$6" '
+	    FNR == 1 { f++ }
+	    $1 == "triangles" { t = $2 } $1 == "max_error" { e[f] = $2 }
+	    END { printf "%-24s %7d %9s %9.2e %6s %9.3g %9.2e %6s %9.3g\n", name,
+		n, t, e[1], prev == "" ? "-" : sprintf("%.2f", prev / e[1]),
+		e[1] * t, e[2], prevp == "" ? "-" : sprintf("%.2f", prevp / e[2]),
+		e[2] * t }' "$3" "$4"
+}
+prev= prevp=
 for l in 6 7 8; do
 	qtsplit -m $l -l $l "$tmp/amoeba.qt" | qtbalance | qtmesh -b > "$tmp/u$l.qt"
 	if [ -n "$PY" ]; then
 		"$PY" tests/oracle/p1solve.py -n "$tmp/u$l.qt" > "$tmp/p$l"
+		"$PY" tests/oracle/p1solve.py -n -p "$tmp/u$l.qt" > "$tmp/q$l"
 	else
 		echo "triangles -" > "$tmp/p$l"
+		echo "triangles -" > "$tmp/q$l"
 	fi
-	awk -v name="qtree -m $l -l $l" -v prev="$prev" \
-	    -v n="$(grep -c '^elem ' "$tmp/u$l.qt")" '
-	    $1 == "triangles" { t = $2 } $1 == "max_error" { e = $2 }
-	    END { printf "%-24s %7d %9s %9.2e %6s %9.3g\n", name, n, t, e,
-		prev == "" ? "-" : sprintf("%.2f", prev / e), e * t }' "$tmp/p$l"
+	p1row "qtree -m $l -l $l" "$(grep -c '^elem ' "$tmp/u$l.qt")" \
+	    "$tmp/p$l" "$tmp/q$l" "$prev" "$prevp"
 	prev=$(awk '$1 == "max_error" { print $2 }' "$tmp/p$l")
+	prevp=$(awk '$1 == "max_error" { print $2 }' "$tmp/q$l")
 done
 [ -n "$GMSH" ] || exit 0
 area=$(qtstats "$tmp/amoeba.qt" | awk '$1 == "polygon_area" { print $2 }')
 univ=$(awk '$1 == "universe" { print $2, $3, $4; exit }' "$tmp/amoeba.qt")
-prev=
+prev= prevp=
 for l in 6 7 8; do
 	# as many triangles as qtree's mesh at level l solves on
 	n=$(awk '$1 == "triangles" { print $2 }' "$tmp/p$l")
@@ -223,10 +235,15 @@ for l in 6 7 8; do
 	h=$(awk -v h="$h" -v n="$n" -v g="$got" 'BEGIN { printf "%.6g", h * sqrt(g / n) }')
 	gmshrun "$tmp/amoeba.qt" "$h"
 	msh2qt "$tmp/g.msh" "$univ" > "$tmp/g.qt"
-	[ -n "$PY" ] && "$PY" tests/oracle/p1solve.py -n "$tmp/g.qt" > "$tmp/g.p"
-	awk -v name="gmsh -2 h=$h" -v prev="$prev" '
-	    $1 == "triangles" { t = $2 } $1 == "max_error" { e = $2 }
-	    END { printf "%-24s %7d %9s %9.2e %6s %9.3g\n", name, t, t, e,
-		prev == "" ? "-" : sprintf("%.2f", prev / e), e * t }' "$tmp/g.p"
+	if [ -n "$PY" ]; then
+		"$PY" tests/oracle/p1solve.py -n "$tmp/g.qt" > "$tmp/g.p"
+		"$PY" tests/oracle/p1solve.py -n -p "$tmp/g.qt" > "$tmp/g.q"
+	else
+		echo "triangles -" > "$tmp/g.p"
+		echo "triangles -" > "$tmp/g.q"
+	fi
+	p1row "gmsh -2 h=$h" "$(grep -c '^elem ' "$tmp/g.qt")" \
+	    "$tmp/g.p" "$tmp/g.q" "$prev" "$prevp"
 	prev=$(awk '$1 == "max_error" { print $2 }' "$tmp/g.p")
+	prevp=$(awk '$1 == "max_error" { print $2 }' "$tmp/g.q")
 done
