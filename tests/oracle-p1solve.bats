@@ -4,9 +4,15 @@
 
 load test_helper
 
+# The python3 with scipy, looked for once (importing scipy takes a while).
+setup_file() {
+	PY=$(scipy_python) || PY=
+	export PY
+}
+
 setup() {
 	qtree_setup || return 1
-	PY=$(scipy_python) || skip "no python3 with numpy and scipy (Debian python3-scipy)"
+	[ -n "$PY" ] || skip "no python3 with numpy and scipy (Debian python3-scipy)"
 }
 
 # The unit square, or [X0, X0 + S]^2 with -v x0=X0 -v s=S, as n by n

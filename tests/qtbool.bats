@@ -89,12 +89,13 @@ gridcheck() {
 	# three objects, their rings numbered from 1 in each, one expression
 	[ "$(grep -E '^(object|op) ' r.qt)" = "$(printf 'object 1\nobject 2\nobject 3\nop or and 1 2 3')" ]
 	[ "$(grep '^ring ' r.qt | cut -d' ' -f1-3 | tr '\n' ,)" = "ring 1 outer,ring 2 hole,ring 1 outer,ring 1 outer," ]
-	# and as the second operand, its objects numbered after the first's
+	# and as the second operand, its objects numbered after the first's,
+	# its cells those just checked against the grid
+	mv r.qt r1.qt
 	qtbool -o or c.qt ab.qt > r.qt
 	[ "$(grep -E '^(object|op) ' r.qt)" = "$(printf 'object 1\nobject 2\nobject 3\nop or 1 and 2 3')" ]
-	run -0 awk -v nested=1 -v op1=and -v op2=or \
-	    -f "$TOP/tests/oracle/boolgrid.awk" "$(F a6.qt)" "$(F d8.qt)" c.qt r.qt
-	[ "$output" = "checked 65536" ]
+	cells r1.qt > want
+	cells r.qt | diff -u want -
 }
 
 @test "A and A, A or A, A or E and E or A give A's own cells" {

@@ -22,10 +22,11 @@
 # A clean run adds each target's executions to its total in
 # tests/fuzz/counts (FUZZCOUNT=0: not), which is kept in git: the fuzzing
 # each parser has had, whatever the runs it took.
-# FUZZTARGETS names the targets to run (default all, as in the loop
-# below).  FUZZCPU=N binds afl-fuzz and the program to CPU N
-# (afl-fuzz -b): persistent, the two hand every input back and forth, and
-# on one CPU of a virtual machine they do so about twice as fast.
+# FUZZTARGETS names the targets to run (default all, as in program()
+# below); only the programs they run are built.  FUZZCPU=N binds
+# afl-fuzz and the program to CPU N (afl-fuzz -b): persistent, the two
+# hand every input back and forth, and on one CPU of a virtual machine
+# they do so about twice as fast.
 set -eu
 cd "$(dirname "$0")/../.."
 time=${FUZZTIME:-60}
@@ -77,15 +78,38 @@ wait_builds() {
 	done
 	pending=
 }
-building build polyread tools/polyread/*.c
-building build qtsplit tools/qtsplit.c tools/qtsplit3.c
-building build qtstats tools/qtstats.c tools/qtstats3.c
-building build qtleaves tools/qtleaves.c
-building build qtbalance tools/qtbalance.c
-building build qtmesh tools/qtmesh/*.c
-building build qtcat tools/qtcat.c
-building build qt2svg tools/qt2svg/*.c
-building build qtbool tools/qtbool.c
+# The targets (default all), and the program each one runs: only those
+# programs are built.
+targets=${FUZZTARGETS:-brep xy wkt poly csv geojson qtree cells numbered \
+    balance qtmesh qtcat qtbool mesh off stl obj ply}
+program() {
+	case $1 in
+	qtree)	echo qtsplit ;;
+	cells)	echo qtstats ;;
+	numbered) echo qtleaves ;;
+	balance) echo qtbalance ;;
+	qtmesh|qtcat|qtbool) echo "$1" ;;
+	mesh)	echo qt2svg ;;
+	*)	echo polyread ;;
+	esac
+}
+# need PROGRAM SOURCE...: builds the program when a target runs it.
+need() {
+	for t in $targets; do
+		[ "$(program "$t")" = "$1" ] || continue
+		building build "$@"
+		return
+	done
+}
+need polyread tools/polyread/*.c
+need qtsplit tools/qtsplit.c tools/qtsplit3.c
+need qtstats tools/qtstats.c tools/qtstats3.c
+need qtleaves tools/qtleaves.c
+need qtbalance tools/qtbalance.c
+need qtmesh tools/qtmesh/*.c
+need qtcat tools/qtcat.c
+need qt2svg tools/qt2svg/*.c
+need qtbool tools/qtbool.c
 wait_builds
 
 # Containers have no CPU governor to check, may refuse CPU binding, and
@@ -142,8 +166,6 @@ fuzzone() {
 # The targets in FUZZJOBS lanes (default one a CPU; 1 when bound to a
 # CPU), each lane running its share one after another, so that a run of
 # 14 targets of FUZZTIME seconds takes 14 / FUZZJOBS of them.
-targets=${FUZZTARGETS:-brep xy wkt poly csv geojson qtree cells numbered \
-    balance qtmesh qtcat qtbool mesh off stl obj ply}
 jobs=${FUZZJOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
 [ -z "${FUZZCPU:-}" ] || jobs=1
 lane=0
