@@ -1,7 +1,8 @@
 #!/bin/sh
 # Fuzzes every parser: polyread in each of its formats and the qtree(5)
 # reader in every program that reads it (rings through qtsplit, cells
-# through qtstats, qtleaves -n, qtbalance, qtmesh, qtcat and qtbool, meshes
+# through qtstats, qtleaves -n, qtbalance, qtmesh (-H, and -b with its
+# angle bounds: bfit), qtcat and qtbool, meshes
 # through qt2svg), each built with AFL++ instrumentation and the address and
 # undefined-behaviour sanitizers, for FUZZTIME seconds (default 60), or
 # about FUZZEXECS executions when that is set, from the seed corpus in
@@ -81,7 +82,7 @@ wait_builds() {
 # The targets (default all), and the program each one runs: only those
 # programs are built.
 targets=${FUZZTARGETS:-brep xy wkt poly csv geojson qtree cells numbered \
-    balance qtmesh qtcat qtbool mesh off stl obj ply}
+    balance qtmesh bfit qtcat qtbool mesh off stl obj ply}
 program() {
 	case $1 in
 	qtree)	echo qtsplit ;;
@@ -89,6 +90,7 @@ program() {
 	numbered) echo qtleaves ;;
 	balance) echo qtbalance ;;
 	qtmesh|qtcat|qtbool) echo "$1" ;;
+	bfit)	echo qtmesh ;;
 	mesh)	echo qt2svg ;;
 	*)	echo polyread ;;
 	esac
@@ -142,6 +144,7 @@ fuzzone() {
 	numbered) set -- tests/fuzz/qtleaves -n @@ ;;
 	balance) set -- tests/fuzz/qtbalance -c @@ ;;
 	qtmesh)	set -- tests/fuzz/qtmesh -H @@ ;;
+	bfit)	set -- tests/fuzz/qtmesh -b @@ ;;
 	qtcat)	set -- tests/fuzz/qtcat @@ tests/fuzz/seeds/qtcat/shard.qt ;;
 	qtbool)	set -- tests/fuzz/qtbool -o xor @@ tests/fuzz/seeds/qtbool/tree.qt ;;
 	mesh)	set -- tests/fuzz/qt2svg @@ ;;
