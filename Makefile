@@ -52,8 +52,14 @@ qtsplit: tools/qtsplit.o tools/qtsplit3.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtsplit.o tools/qtsplit3.o lib/libqtree.a $(LDLIBS)
 qtleaves: tools/qtleaves.o
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtleaves.o lib/libqtree.a $(LDLIBS)
-qtstats: tools/qtstats.o tools/qtstats3.o
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtstats.o tools/qtstats3.o lib/libqtree.a $(LDLIBS)
+# qtstats too: main.c, poly.c, tree.c, jump.c, mesh.c, sums.c, merge.c,
+# solid.c.
+QTSTATSOBJ = tools/qtstats/main.o tools/qtstats/poly.o \
+	tools/qtstats/tree.o tools/qtstats/jump.o tools/qtstats/mesh.o \
+	tools/qtstats/sums.o tools/qtstats/merge.o tools/qtstats/solid.o
+$(QTSTATSOBJ): $(QTREEH) tools/qtstats/qtstats.h
+qtstats: $(QTSTATSOBJ)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QTSTATSOBJ) lib/libqtree.a $(LDLIBS)
 # qt2svg too: main.c, out.c, window.c, leaves.c, rings.c, mesh.c,
 # quality.c, legend.c.
 QT2SVGOBJ = tools/qt2svg/main.o tools/qt2svg/out.o tools/qt2svg/window.o \
@@ -73,8 +79,7 @@ qtbool: tools/qtbool.o
 $(POLYREADOBJ): $(QTREEH) tools/polyread/polyread.h
 $(QTMESHOBJ): $(QTREEH) tools/qtmesh/qtmesh.h
 tools/qtsplit.o tools/qtsplit3.o: tools/qtsplit.h
-tools/qtstats.o tools/qtstats3.o: tools/qtstats.h
-tools/qtsplit.o tools/qtsplit3.o tools/qtleaves.o tools/qtstats.o tools/qtstats3.o \
+tools/qtsplit.o tools/qtsplit3.o tools/qtleaves.o \
 tools/qtcat.o tools/qtbalance.o \
 tools/qtbool.o: $(QTREEH)
 
@@ -212,7 +217,7 @@ clean:
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
 	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o
-	rm -f $(POLYREADOBJ) $(QTMESHOBJ) $(QT2SVGOBJ)
+	rm -f $(POLYREADOBJ) $(QTMESHOBJ) $(QT2SVGOBJ) $(QTSTATSOBJ)
 
 .PHONY: all deps testprogs test check-long demo regress mutate bench bench-peers bench-mesh \
 	bench-shards sanitize \

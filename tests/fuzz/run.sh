@@ -105,7 +105,7 @@ need() {
 }
 need polyread tools/polyread/*.c
 need qtsplit tools/qtsplit.c tools/qtsplit3.c
-need qtstats tools/qtstats.c tools/qtstats3.c
+need qtstats tools/qtstats/*.c
 need qtleaves tools/qtleaves.c
 need qtbalance tools/qtbalance.c
 need qtmesh tools/qtmesh/*.c

@@ -1,6 +1,8 @@
 /*
- * qtstats on a 3D stream: the solid's figures from its shells, the
- * octree's from its cells, as key value lines (qtstats(1), Solids).
+ * solid.c: qtstats on a 3D stream: the solid's figures from its shells,
+ * the octree's from its cells, as key value lines (qtstats(1), Solids).
+ * main.c hands it the stream at its first record, and its lines go out
+ * through main.c's putcount and putreal.
  */
 #include <math.h>
 #include <stdint.h>
@@ -24,30 +26,6 @@ static struct {
 	struct xsum	 vol6;		/* six times the volume, exactly */
 	double		 area, mx, my, mz;	/* area; 24 times moments */
 } s3 = { .deepest = -1 };
-
-static void
-put(const char *key, const char *v)
-{
-	printf("%s %s\n", key, v);
-}
-
-static void
-putcount3(const char *key, unsigned long long v)
-{
-	char buf[32];
-
-	fmtint(buf, (long long)v);
-	put(key, buf);
-}
-
-static void
-putreal3(const char *key, double v)
-{
-	char buf[32];
-
-	fmtreal(buf, v);
-	put(key, buf);
-}
 
 /*
  * A shell's part of the solid's volume, area and moments: over its
@@ -132,20 +110,20 @@ report3(int table)
 	unsigned long long nodes = 0, leaves[3] = { 0, 0, 0 };
 	int l, k;
 
-	putcount3("shells", s3.nshells);
-	putcount3("cavities", s3.ncavities);
-	putcount3("faces", s3.nfaces);
+	putcount("shells", s3.nshells);
+	putcount("cavities", s3.ncavities);
+	putcount("faces", s3.nfaces);
 	if (s3.nshells > 0) {
-		putreal3("polyhedron_volume", vol);
-		putreal3("surface_area", s3.area);
+		putreal("polyhedron_volume", vol);
+		putreal("surface_area", s3.area);
 		if (vol != 0) {
-			putreal3("centroid_x", s3.mx / (24 * vol));
-			putreal3("centroid_y", s3.my / (24 * vol));
-			putreal3("centroid_z", s3.mz / (24 * vol));
+			putreal("centroid_x", s3.mx / (24 * vol));
+			putreal("centroid_y", s3.my / (24 * vol));
+			putreal("centroid_z", s3.mz / (24 * vol));
 		}
 	}
 	if (s3.haveu)
-		putcount3("universe_deepest_level", univ3deepest(&s3.u));
+		putcount("universe_deepest_level", univ3deepest(&s3.u));
 	if (s3.deepest < 0)
 		return;
 	for (l = 0; l <= s3.deepest; l++) {
@@ -153,15 +131,15 @@ report3(int table)
 		for (k = 0; k < 3; k++)
 			leaves[k] += lev3[l].leaves[k];
 	}
-	putcount3("cells", nodes + leaves[F3] + leaves[E3] + leaves[P3]);
-	putcount3("nodes", nodes);
-	putcount3("leaves", leaves[F3] + leaves[E3] + leaves[P3]);
-	putcount3("leaves_F", leaves[F3]);
-	putcount3("leaves_E", leaves[E3]);
-	putcount3("leaves_P", leaves[P3]);
-	putcount3("deepest_level", s3.deepest);
-	putreal3("volume_full", leafvolume(0, s3.deepest));
-	putreal3("volume_full_partial", leafvolume(1, s3.deepest));
+	putcount("cells", nodes + leaves[F3] + leaves[E3] + leaves[P3]);
+	putcount("nodes", nodes);
+	putcount("leaves", leaves[F3] + leaves[E3] + leaves[P3]);
+	putcount("leaves_F", leaves[F3]);
+	putcount("leaves_E", leaves[E3]);
+	putcount("leaves_P", leaves[P3]);
+	putcount("deepest_level", s3.deepest);
+	putreal("volume_full", leafvolume(0, s3.deepest));
+	putreal("volume_full_partial", leafvolume(1, s3.deepest));
 	if (!table)
 		return;
 	printf("# level cells nodes leaves leaves_F leaves_E leaves_P\n");
