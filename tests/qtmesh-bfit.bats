@@ -166,6 +166,15 @@ meshed='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	    'BEGIN { exit !(a > w * 0.999 && a < w * 1.001) }'
 }
 
+@test "an arc far larger than the tree's leaves is refused, not chorded for ever (a hang the fuzzer found)" {
+	sed 's/^v 3 2$/v 3333333333333333333333333333333 2/' "$SAMPLES/plate-hole.qt" > big.qt
+	grep -q '^v 3333333333333333333333333333333 2$' big.qt
+	qtsplit -l 3 big.qt | qtbalance > tree.qt
+	run -1 --separate-stderr timeout 60 qtmesh -b tree.qt
+	[[ "$stderr" == "qtmesh: tree.qt:"*": an arc of this ring would take more chords at level 3 than the tree's "*" leaves warrant: no mesh written" ]]
+	[ -z "$output" ]
+}
+
 @test "-b is refused with -H and -c" {
 	run -2 --separate-stderr qtmesh -b -H /dev/null
 	[[ "$stderr" == *"not with -H"* ]]

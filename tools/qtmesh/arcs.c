@@ -227,7 +227,8 @@ addparam(double **ts, size_t *n, size_t *cap, double t, double t0,
  */
 static void
 arcpoints(struct mesh *m, struct point a, struct point mid, struct point b,
-    int level, struct point **v, size_t *n, size_t *cap, uint32_t k)
+    int level, struct point **v, size_t *n, size_t *cap, uint32_t k,
+    long lineno)
 {
 	double ux = mid.x - a.x, uy = mid.y - a.y, wx = b.x - a.x, wy = b.y - a.y;
 	double d = 2 * (ux * wy - uy * wx), cx, cy, r, t0, t1, sweep, h, c;
@@ -250,15 +251,23 @@ arcpoints(struct mesh *m, struct point a, struct point mid, struct point b,
 			sweep -= 2 * PI;
 	setarc(&m->b, k, cx, cy, r, a, b);
 	h = ldexp(m->u.size, -level);
+	/*
+	 * A tree whose leaves follow the arc has about as many as the arc
+	 * has crossings; a stream that asks far more is refused, not run.
+	 */
+	if (!(fabs(sweep) * r / h + 4 * r / h < 64.0 * (double)m->nleaves +
+	    65536))
+		errat(m->inname, lineno, "an arc of this ring would take "
+		    "more chords at level %d than the tree's %zu leaves "
+		    "warrant: no mesh written", level, m->nleaves);
 	for (axis = 0; axis < 2; axis++) {
 		double o = axis ? m->u.y0 : m->u.x0, cc = axis ? cy : cx;
-		double lo = floor((cc - r - o) / h), hi = ceil((cc + r - o) / h);
+		double lo = fmax(floor((cc - r - o) / h), 0);
+		double hi = fmin(ceil((cc + r - o) / h), ldexp(1, level));
 
 		for (c = lo; c <= hi; c++) {
 			double line, q;
 
-			if (c < 0 || ldexp(c, -level) > 1)
-				continue;
 			line = cell_coord(o, m->u.size, level, (uint64_t)c);
 			q = (line - cc) / r;
 			if (!(q > -1 && q < 1))
@@ -321,7 +330,8 @@ chordring(struct mesh *m, const struct ring *g, long lineno, int level)
 		addvertex(&v, &n, &cap, g->v[i].x, g->v[i].y);
 		if (g->arc[i])
 			arcpoints(m, g->v[i], g->mid[i], g->v[(i + 1) % g->n],
-			    level, &v, &n, &cap, (uint32_t)++m->b.narcsmade);
+			    level, &v, &n, &cap, (uint32_t)++m->b.narcsmade,
+			    lineno);
 	}
 	p.v = v;
 	p.n = n;
