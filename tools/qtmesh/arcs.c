@@ -82,56 +82,11 @@ onarc(double cx, double cy, double r, double t)
 	return p;
 }
 
-/* The arc that point (x, y) was made on, or 0. */
-static size_t
-arcslot(const struct bfit *b, double x, double y)
-{
-	uint64_t u, v, h;
-	size_t k;
-
-	memcpy(&u, &x, sizeof(u));
-	memcpy(&v, &y, sizeof(v));
-	h = u * UINT64_C(0x9E3779B97F4A7C15) ^ v * UINT64_C(0xC2B2AE3D27D4EB4F);
-	h ^= h >> 31;
-	for (k = h & (b->arcatcap - 1); b->arcat[k].id != 0;
-	    k = (k + 1) & (b->arcatcap - 1))
-		if (b->arcat[k].x == x && b->arcat[k].y == y)
-			break;
-	return k;
-}
-
+/* The arc that point p was made on, or 0. */
 static uint32_t
 arcat(const struct bfit *b, struct point p)
 {
-	return b->arcatcap == 0 ? 0 : b->arcat[arcslot(b, p.x + 0.0,
-	    p.y + 0.0)].id;
-}
-
-void
-putarcat(struct bfit *b, double x, double y, uint32_t k)
-{
-	size_t i, at;
-
-	x += 0.0;
-	y += 0.0;
-	if (2 * (b->narcat + 1) > b->arcatcap) {
-		struct bslot *old = b->arcat;
-		size_t oldcap = b->arcatcap;
-
-		b->arcatcap = oldcap ? 2 * oldcap : 256;
-		b->arcat = xcalloc(b->arcatcap, sizeof(*b->arcat));
-		for (i = 0; i < oldcap; i++)
-			if (old[i].id != 0)
-				b->arcat[arcslot(b, old[i].x, old[i].y)] =
-				    old[i];
-		free(old);
-	}
-	at = arcslot(b, x, y);
-	if (b->arcat[at].id == 0)
-		b->narcat++;
-	b->arcat[at].x = x;
-	b->arcat[at].y = y;
-	b->arcat[at].id = k;
+	return ptab_get(&b->arcat, p.x, p.y);
 }
 
 static int
@@ -312,7 +267,7 @@ arcpoints(struct mesh *m, struct point a, struct point mid, struct point b,
 			if (j == steps)	/* a crossing: on its line exactly */
 				snapline(m, &p, level);
 			addvertex(v, n, cap, p.x, p.y);
-			putarcat(&m->b, p.x, p.y, k);
+			ptab_put(&m->b.arcat, p.x, p.y, k);
 		}
 	}
 	free(ts);

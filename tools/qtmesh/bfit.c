@@ -39,44 +39,64 @@ bslot(const struct bslot *tab, size_t cap, double x, double y)
 	return k;
 }
 
+/* The number at point (x, y) in table t, 0 for none; -0 is 0. */
+uint32_t
+ptab_get(const struct ptab *t, double x, double y)
+{
+	return t->cap == 0 ? 0 : t->slot[bslot(t->slot, t->cap, x + 0.0,
+	    y + 0.0)].id;
+}
+
+/* Point (x, y) given number id (not 0) in table t. */
+void
+ptab_put(struct ptab *t, double x, double y, uint32_t id)
+{
+	size_t i, k;
+
+	x += 0.0;
+	y += 0.0;
+	if (2 * (t->n + 1) > t->cap) {
+		struct bslot *old = t->slot;
+		size_t oldcap = t->cap;
+
+		t->cap = oldcap ? 2 * oldcap : 256;
+		t->slot = xcalloc(t->cap, sizeof(*t->slot));
+		for (i = 0; i < oldcap; i++)
+			if (old[i].id != 0)
+				t->slot[bslot(t->slot, t->cap, old[i].x,
+				    old[i].y)] = old[i];
+		free(old);
+	}
+	k = bslot(t->slot, t->cap, x, y);
+	if (t->slot[k].id == 0)
+		t->n++;
+	t->slot[k].x = x;
+	t->slot[k].y = y;
+	t->slot[k].id = id;
+}
+
 /* The number of the vertex at (x, y), a new one if none is there yet. */
 uint32_t
 bvertex(struct bfit *b, double x, double y)
 {
-	size_t k;
+	uint32_t id = ptab_get(&b->btab, x, y);
 
-	x += 0.0;	/* -0 is 0: one vertex, one hash */
+	if (id != 0)
+		return id;
+	x += 0.0;	/* -0 is 0: one vertex */
 	y += 0.0;
-	if (2 * (b->nbv + 1) > b->btabcap) {
-		struct bslot *old = b->btab;
-		size_t i, oldcap = b->btabcap;
-
-		b->btabcap = oldcap ? 2 * oldcap : 1024;
-		b->btab = xcalloc(b->btabcap, sizeof(*b->btab));
-		for (i = 0; i < oldcap; i++)
-			if (old[i].id != 0)
-				b->btab[bslot(b->btab, b->btabcap, old[i].x,
-				    old[i].y)] = old[i];
-		free(old);
-	}
-	k = bslot(b->btab, b->btabcap, x, y);
-	if (b->btab[k].id == 0) {
-		b->bv = xgrow(b->bv, &b->bvcap, b->nbv + 1, sizeof(*b->bv));
-		b->bv[b->nbv].x = x;
-		b->bv[b->nbv].y = y;
-		b->btab[k].x = x;
-		b->btab[k].y = y;
-		b->btab[k].id = ++b->nbv;
-	}
-	return b->btab[k].id;
+	b->bv = xgrow(b->bv, &b->bvcap, b->nbv + 1, sizeof(*b->bv));
+	b->bv[b->nbv].x = x;
+	b->bv[b->nbv].y = y;
+	ptab_put(&b->btab, x, y, (uint32_t)++b->nbv);
+	return (uint32_t)b->nbv;
 }
 
 /* The number of the vertex at (x, y), 0 when there is none. */
 uint32_t
 bvfind(const struct bfit *b, double x, double y)
 {
-	return b->btabcap == 0 ? 0 : b->btab[bslot(b->btab, b->btabcap,
-	    x + 0.0, y + 0.0)].id;
+	return ptab_get(&b->btab, x, y);
 }
 
 void
@@ -239,30 +259,15 @@ nearestline(const struct bfit *b, int vertical, double v)
 static void
 snapput(struct bfit *b, double x, double y, double tx, double ty)
 {
-	size_t k, at;
+	uint32_t id = ptab_get(&b->snap, x, y);
 
-	if (2 * (b->nsnap + 1) > b->snapcap) {
-		struct bslot *old = b->snap;
-		size_t oldcap = b->snapcap;
-
-		b->snapcap = oldcap ? 2 * oldcap : 64;
-		b->snap = xcalloc(b->snapcap, sizeof(*b->snap));
-		for (k = 0; k < oldcap; k++)
-			if (old[k].id != 0)
-				b->snap[bslot(b->snap, b->snapcap, old[k].x,
-				    old[k].y)] = old[k];
-		free(old);
-		b->snapto = xreallocarray(b->snapto, b->snapcap,
+	if (id == 0) {
+		b->snapto = xgrow(b->snapto, &b->snaptocap, b->snap.n + 1,
 		    sizeof(*b->snapto));
+		ptab_put(&b->snap, x, y, id = (uint32_t)b->snap.n + 1);
 	}
-	at = bslot(b->snap, b->snapcap, x, y);
-	if (b->snap[at].id == 0) {
-		b->snap[at].x = x;
-		b->snap[at].y = y;
-		b->snap[at].id = (uint32_t)++b->nsnap;
-	}
-	b->snapto[b->snap[at].id - 1].x = tx;
-	b->snapto[b->snap[at].id - 1].y = ty;
+	b->snapto[id - 1].x = tx;
+	b->snapto[id - 1].y = ty;
 }
 
 /* The point a loop takes for (x, y). */
@@ -270,12 +275,9 @@ static struct point
 snapped(const struct bfit *b, double x, double y)
 {
 	struct point p = { x, y };
-	size_t at;
+	uint32_t id = ptab_get(&b->snap, x, y);
 
-	if (b->nsnap > 0 && b->snap[at = bslot(b->snap, b->snapcap, x,
-	    y)].id != 0)
-		p = b->snapto[b->snap[at].id - 1];
-	return p;
+	return id != 0 ? b->snapto[id - 1] : p;
 }
 
 /*

@@ -74,6 +74,11 @@ struct bslot {
 	uint32_t	id;	/* 0: free */
 };
 
+struct ptab {			/* open addressing, for ptab_get and _put */
+	struct bslot	*slot;
+	size_t		 cap, n;
+};
+
 /*
  * Directed sides a -> b of elements, as a table from the pair to a
  * number: the ring a side runs along, or 1 for every side.
@@ -124,9 +129,9 @@ struct bfit {
 	size_t		*leafloops;	/* leaf i: loops [i] to [i + 1] */
 	size_t		*leafpts;	/* leaf i: its loops' points from */
 	struct linept	*vline, *hline;
-	struct bslot	*snap;	/* crossings taken as corners: id - 1 ... */
+	struct ptab	 snap;	/* crossings taken as corners: id - 1 ... */
 	struct point	*snapto;	/* ... into snapto */
-	size_t		 nsnap, snapcap;
+	size_t		 snaptocap;
 	size_t		 nvline, nhline, vlinecap, hlinecap;
 	size_t		*elstart;	/* leaf i: elements [i] to [i + 1] */
 	unsigned char	*templated;	/* leaf i: meshed by the templates */
@@ -142,8 +147,7 @@ struct bfit {
 	struct point	*rpts;
 	size_t		 nrpts, rptcap, *rlen, nrlen, rlencap, *rline, nrline,
 			 rlinecap;
-	struct bslot	*btab;
-	size_t		 btabcap;
+	struct ptab	 btab;	/* bv by point */
 	struct point	*bv;	/* vertex i + 1 */
 	size_t		 nbv, bvcap;
 	struct sidemap	 ringsides;	/* sides along rings: their ring */
@@ -159,8 +163,7 @@ struct bfit {
 		struct point	a, b;	/* its ends */
 	}		*arcs;
 	size_t		 narcs, arccap, narcsmade;
-	struct bslot	*arcat;
-	size_t		 arcatcap, narcat;
+	struct ptab	 arcat;
 	/* the rings as read, until the leaves are known (arcs.c) */
 	struct ring	*kept;
 	long		*keptline;
@@ -209,6 +212,8 @@ void	 bfitring(struct mesh *, const struct ring *, long);
 size_t	 bfitmesh(struct mesh *);
 void	 leafbox(const struct mesh *, const struct leaf *, double[2],
 	    double[2]);
+uint32_t ptab_get(const struct ptab *, double, double);
+void	 ptab_put(struct ptab *, double, double, uint32_t);
 uint32_t bvertex(struct bfit *, double, double);
 uint32_t bvfind(const struct bfit *, double, double);
 void	 setelem(const struct bfit *, struct elem *, const uint32_t *, int);
@@ -224,7 +229,6 @@ void	 bfitboundary(struct mesh *);
 /* arcs.c: -b's rings kept as read, their arcs made chords */
 void	 keepring(struct mesh *, const struct ring *, long);
 void	 chordrings(struct mesh *);
-void	 putarcat(struct bfit *, double, double, uint32_t);
 uint32_t arcchord(const struct bfit *, struct point, struct point,
 	    struct point *);
 

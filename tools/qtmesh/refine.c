@@ -456,7 +456,7 @@ splitside(struct refiner *r, uint32_t a, uint32_t b)
 		goto frozen;
 	mid = newvertex(r, x, y);
 	if (arc != 0)
-		putarcat(&m->b, x, y, arc);
+		ptab_put(&m->b.arcat, x, y, arc);
 	r->budget--;
 	sideput(&r->open, a, b, 0);
 	sideput(&m->b.ringsides, a, mid, ring);
