@@ -493,9 +493,9 @@ size_t	 earclip_region(struct earclip *, const struct point *, const size_t *,
  * outward-oriented shell), < 0 on the other side, 0 in the plane; exact
  * (a floating filter, then an expansion) unless a product of three
  * coordinates underflows, which needs coordinates below about 1e-98.
- * crossdir3(a, b, c, d, axis) is arc_crossdir of the four points projected
- * along axis (0 x, 1 y, 2 z) onto the plane of the other two, in
- * increasing order.  Cells: at level L the universe is a 2^L x 2^L x 2^L
+ * project3(p, axis) is p's two coordinates other than axis, in
+ * increasing order; crossdir3(a, b, c, d, axis) is arc_crossdir of the
+ * four points so projected (axis 0 x, 1 y, 2 z).  Cells: at level L the universe is a 2^L x 2^L x 2^L
  * grid; a path has one digit per level, digit = 4 z bit + 2 y bit + x bit.
  */
 struct point3 {
@@ -529,6 +529,7 @@ struct cell3 {
 };
 
 int	 orient3d(struct point3, struct point3, struct point3, struct point3);
+struct point project3(struct point3, int);	/* the other two axes' */
 int	 crossdir3(struct point3, struct point3, struct point3, struct point3,
 	    int);
 /*

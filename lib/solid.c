@@ -79,8 +79,8 @@ orient3d(struct point3 a, struct point3 b, struct point3 c, struct point3 d)
 }
 
 /* The point's two coordinates other than axis, in increasing order. */
-static struct point
-project(struct point3 p, int axis)
+struct point
+project3(struct point3 p, int axis)
 {
 	struct point q;
 
@@ -93,8 +93,8 @@ int
 crossdir3(struct point3 a, struct point3 b, struct point3 c, struct point3 d,
     int axis)
 {
-	return arc_crossdir(project(a, axis), project(b, axis), project(c, axis),
-	    project(d, axis));
+	return arc_crossdir(project3(a, axis), project3(b, axis),
+	    project3(c, axis), project3(d, axis));
 }
 
 /*
@@ -202,8 +202,8 @@ int
 axisline_meets(struct point3 a, struct point3 b, struct point3 c,
     struct point3 p, int axis)
 {
-	struct point v[3] = { project(a, axis), project(b, axis),
-	    project(c, axis) }, q = project(p, axis);
+	struct point v[3] = { project3(a, axis), project3(b, axis),
+	    project3(c, axis) }, q = project3(p, axis);
 	int o = orient2d(v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y);
 	int i, e;
 

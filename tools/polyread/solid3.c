@@ -390,16 +390,6 @@ intri2(const struct point t[3], struct point p)
 	    (o1 <= 0 && o2 <= 0 && o3 <= 0);
 }
 
-static struct point
-proj(struct point3 p, int axis)
-{
-	struct point q;
-
-	q.x = axis == 0 ? p.y : p.x;
-	q.y = axis == 2 ? p.y : p.z;
-	return q;
-}
-
 /* Closed segment pq and closed triangle abc, both in one plane. */
 static int
 segtri2(struct point3 p, struct point3 q, struct point3 a, struct point3 b,
@@ -408,11 +398,11 @@ segtri2(struct point3 p, struct point3 q, struct point3 a, struct point3 b,
 	int axis = flataxis(a, b, c), i;
 	struct point t[3], s, e;
 
-	t[0] = proj(a, axis);
-	t[1] = proj(b, axis);
-	t[2] = proj(c, axis);
-	s = proj(p, axis);
-	e = proj(q, axis);
+	t[0] = project3(a, axis);
+	t[1] = project3(b, axis);
+	t[2] = project3(c, axis);
+	s = project3(p, axis);
+	e = project3(q, axis);
 	if (intri2(t, s) || intri2(t, e))
 		return 1;
 	for (i = 0; i < 3; i++)
@@ -453,8 +443,8 @@ cone(struct point3 v, struct point3 a, struct point3 c, struct point3 d)
 	if (orient3d(v, c, d, a) != 0)
 		return 0;
 	axis = flataxis(v, c, d);
-	pv = proj(v, axis), pa = proj(a, axis);
-	pc = proj(c, axis), pd = proj(d, axis);
+	pv = project3(v, axis), pa = project3(a, axis);
+	pc = project3(c, axis), pd = project3(d, axis);
 	o = orient(pv, pc, pd);
 	return o * orient(pv, pc, pa) >= 0 && o * orient(pv, pa, pd) >= 0;
 }
@@ -513,8 +503,8 @@ facesmeet(size_t f, size_t g)
 		if (orient3d(u, w, P(f, oa), P(g, ob)) != 0)
 			return 0;
 		axis = flataxis(u, w, P(f, oa));
-		return orient(proj(u, axis), proj(w, axis), proj(P(f, oa),
-		    axis)) * orient(proj(u, axis), proj(w, axis), proj(P(g, ob),
+		return orient(project3(u, axis), project3(w, axis), project3(P(f, oa),
+		    axis)) * orient(project3(u, axis), project3(w, axis), project3(P(g, ob),
 		    axis)) > 0;
 	}
 	return 1;
