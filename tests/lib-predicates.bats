@@ -41,6 +41,24 @@ load test_helper
 	        o = random.choice([0, 1e5, 0.1])
 	        p = [random.randint(-3, 3) * s + o for _ in range(8)]
 	    cases.append(p)
+	# exact ties among larger integers: four lattice points of one
+	# circle (radius 1105: differences under 2^12; 5525: over), at
+	# scales over the range qtree(5) allows
+	for r in (1105, 5525):
+	    lat = [(x, y) for x in range(-r, r + 1)
+	        for y in (math.isqrt(r * r - x * x),)
+	        if y * y + x * x == r * r]
+	    lat += [(x, -y) for x, y in lat if y]
+	    for i in range(600):
+	        s = random.choice([1, 2.0 ** -300, 2.0 ** 300, 1e-90,
+	            2.0 ** -33, 0.75])
+	        cx, cy = random.randint(-9, 9), random.randint(-9, 9)
+	        p = []
+	        for x, y in random.sample(lat, 4):
+	            p += [(x + cx) * s, (y + cy) * s]
+	        if i % 3 == 0:
+	            p[random.randrange(8)] += random.choice([1, -1]) * s
+	        cases.append(p)
 	inp = "\n".join(" ".join(repr(x) for x in c) for c in cases) + "\n"
 	out = subprocess.run([sys.argv[1]], input=inp, capture_output=True,
 	    text=True, check=True).stdout.split("\n")
@@ -48,7 +66,7 @@ load test_helper
 	    if o != "%d %d" % (incircle(c), orient(c))]
 	ties = sum(1 for c in cases if incircle(c) == 0)
 	print("cases", len(cases), "ties", ties, "wrong", len(bad))
-	if bad or ties < 20:
+	if bad or ties < 600:
 	    sys.exit(1)
 	PY
 }

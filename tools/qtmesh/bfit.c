@@ -162,27 +162,51 @@ addlinept(struct linept **a, size_t *n, size_t *cap, double line, double pos)
 }
 
 static int
-cmplinept(const void *va, const void *vb)
+lineless(const struct linept *a, const struct linept *b)
 {
-	const struct linept *a = va, *b = vb;
-
-	if (a->line != b->line)
-		return a->line < b->line ? -1 : 1;
-	return (a->pos > b->pos) - (a->pos < b->pos);
+	return a->line < b->line || (a->line == b->line && a->pos < b->pos);
 }
 
+/*
+ * Sorted by line, then position, and each point once.  A merge sort of
+ * its own: the index holds every leaf's corners, and qsort's calls of a
+ * comparison cost more than the rest of the index.
+ */
 static void
 sortline(struct linept *a, size_t *n)
 {
-	size_t i, w = 0;
+	struct linept *tmp, *src = a, *dst, *swap, key;
+	size_t i, j, w, lo, mid, hi, p, q;
 
 	if (*n == 0)
 		return;
-	qsort(a, *n, sizeof(*a), cmplinept);
-	for (i = 0; i < *n; i++)
-		if (w == 0 || cmplinept(&a[w - 1], &a[i]) != 0)
-			a[w++] = a[i];
+	for (lo = 0; lo < *n; lo += 8)	/* runs of 8, by insertion */
+		for (i = lo + 1; i < lo + 8 && i < *n; i++) {
+			key = a[i];
+			for (j = i; j > lo && lineless(&key, &a[j - 1]); j--)
+				a[j] = a[j - 1];
+			a[j] = key;
+		}
+	dst = tmp = xreallocarray(NULL, *n, sizeof(*tmp));
+	for (w = 8; w < *n; w *= 2) {
+		for (lo = 0; lo < *n; lo += 2 * w) {
+			mid = lo + w < *n ? lo + w : *n;
+			hi = lo + 2 * w < *n ? lo + 2 * w : *n;
+			for (p = lo, q = mid, i = lo; p < mid && q < hi;)
+				dst[i++] = lineless(&src[q], &src[p]) ?
+				    src[q++] : src[p++];
+			while (p < mid)
+				dst[i++] = src[p++];
+			while (q < hi)
+				dst[i++] = src[q++];
+		}
+		swap = src, src = dst, dst = swap;
+	}
+	for (i = 0, w = 0; i < *n; i++)
+		if (w == 0 || lineless(&a[w - 1], &src[i]))
+			a[w++] = src[i];
 	*n = w;
+	free(tmp);
 }
 
 /* The loops of leaf l, checked against the rings, into lpts. */
@@ -294,6 +318,7 @@ snaplines(struct bfit *b, int vertical)
 	struct linept *a = vertical ? b->vline : b->hline;
 	size_t n = vertical ? b->nvline : b->nhline, i;
 	double to, big;
+	int moved = 0;
 
 	for (i = 0; i < n; i++) {
 		to = nearestline(b, !vertical, a[i].pos);
@@ -305,8 +330,10 @@ snaplines(struct bfit *b, int vertical)
 		else
 			snapput(b, a[i].pos, a[i].line, to, a[i].line);
 		a[i].pos = to;
+		moved = 1;
 	}
-	sortline(a, &n);
+	if (moved)
+		sortline(a, &n);
 	if (vertical)
 		b->nvline = n;
 	else

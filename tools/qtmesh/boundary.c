@@ -157,14 +157,20 @@ sidering(struct mesh *m, uint32_t a, uint32_t b)
 	return ring;
 }
 
-/* Every element's sides, each as its element runs, into sm. */
+/* Every element's sides, each as its element runs, into the empty map sm. */
 void
 putsides(const struct mesh *m, struct sidemap *sm)
 {
 	const struct elem *elems = m->elems;
-	size_t i;
+	size_t i, total = 0;
 	int k, n;
 
+	/* sized once: growing by doubling costs as much as the puts */
+	for (i = 0; i < m->nelems; i++)
+		total += nverts(&elems[i]);
+	for (sm->cap = 1024; sm->cap < 2 * (total + 1);)
+		sm->cap *= 2;
+	sm->slot = xcalloc(sm->cap, sizeof(*sm->slot));
 	for (i = 0; i < m->nelems; i++)
 		for (n = nverts(&elems[i]), k = 0; k < n; k++)
 			sideput(sm, elems[i].v[k], elems[i].v[(k + 1) % n], 1);

@@ -739,14 +739,20 @@ leafat(const struct mesh *m, const struct leafkey *tab, size_t cap,
     int maxlevel, double x, double y)
 {
 	double fx = (x - m->u.x0) / m->u.size, fy = (y - m->u.y0) / m->u.size;
+	uint64_t ix, iy;
 	int level;
 
 	if (!(fx >= 0 && fx < 1 && fy >= 0 && fy < 1))
 		return -1;
-	for (level = 0; level <= maxlevel; level++) {
-		uint64_t ix = (uint64_t)ldexp(fx, level);
-		uint64_t iy = (uint64_t)ldexp(fy, level);
-		size_t k = leafslot(tab, cap, level, ix, iy);
+	/*
+	 * The one leaf holding the point, from the finest level, where most
+	 * of the band is: floor(f 2^l) is floor(f 2^maxlevel) shifted.
+	 */
+	ix = (uint64_t)ldexp(fx, maxlevel);
+	iy = (uint64_t)ldexp(fy, maxlevel);
+	for (level = maxlevel; level >= 0; level--) {
+		size_t k = leafslot(tab, cap, level, ix >> (maxlevel - level),
+		    iy >> (maxlevel - level));
 
 		if (tab[k].leaf >= 0)
 			return tab[k].leaf;
