@@ -169,43 +169,6 @@ incircle_exact(double d[6][2])
 }
 
 /*
- * The incircle determinant's sign in doubles, when that is exact: every
- * difference d[i] exact (no low part) and, scaled by one power of two,
- * an integer under 2^12 in magnitude.  Then every product is an integer
- * under 2^50 and the sum of three under 2^52, none rounded.  Grid points
- * (a leaf's corners, the midpoints of its sides) pass, and four corners
- * of a square, cocircular, are the filter's most common failure.  0 when
- * the test does not apply.
- */
-static int
-incircle_small(const double d[6][2], int *sign)
-{
-	double big = 0, scale, n[6], det;
-	int i, e;
-
-	for (i = 0; i < 6; i++) {
-		if (d[i][1] != 0)
-			return 0;
-		if (fabs(d[i][0]) > big)
-			big = fabs(d[i][0]);
-	}
-	(void)frexp(big, &e);
-	if (big == 0 || e < -1000 || e > 1000)
-		return 0;
-	scale = ldexp(1, 12 - e);
-	for (i = 0; i < 6; i++) {
-		n[i] = d[i][0] * scale;
-		if (n[i] != floor(n[i]) || (n[i] == 0 && d[i][0] != 0))
-			return 0;
-	}
-	det = (n[0] * n[0] + n[1] * n[1]) * (n[2] * n[5] - n[4] * n[3]) +
-	    (n[2] * n[2] + n[3] * n[3]) * (n[4] * n[1] - n[0] * n[5]) +
-	    (n[4] * n[4] + n[5] * n[5]) * (n[0] * n[3] - n[2] * n[1]);
-	*sign = (det > 0) - (det < 0);
-	return 1;
-}
-
-/*
  * > 0 when d lies inside the circle through a, b, c (counter-clockwise),
  * < 0 outside, 0 on it: Shewchuk's filter, then the expansion.
  */
@@ -222,7 +185,6 @@ incircle(double ax, double ay, double bx, double by, double cx, double cy,
 	double perm = (fabs(bc) + fabs(cb)) * alift + (fabs(ca) + fabs(ac)) *
 	    blift + (fabs(ab) + fabs(ba)) * clift;
 	double diff[6][2];
-	int sign;
 
 	if (det > INCIRCLE_BOUND * perm)
 		return 1;
@@ -234,8 +196,6 @@ incircle(double ax, double ay, double bx, double by, double cx, double cy,
 	two_sum(by, -dy, &diff[3][0], &diff[3][1]);
 	two_sum(cx, -dx, &diff[4][0], &diff[4][1]);
 	two_sum(cy, -dy, &diff[5][0], &diff[5][1]);
-	if (incircle_small(diff, &sign))
-		return sign;
 	return incircle_exact(diff);
 }
 
