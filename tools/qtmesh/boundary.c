@@ -157,23 +157,53 @@ sidering(struct mesh *m, uint32_t a, uint32_t b)
 	return ring;
 }
 
-/* Every element's sides, each as its element runs, into the empty map sm. */
+/*
+ * Every element's sides, each as its element runs, listed by the vertex
+ * it leaves: a side's twin is then among a few sides of one vertex, and
+ * vertices are numbered as the cells first use them, so that neighbours
+ * in the walk over the elements are neighbours in memory, unlike a hash
+ * table's slots.
+ */
 void
-putsides(const struct mesh *m, struct sidemap *sm)
+outsides_build(const struct mesh *m, struct outsides *os)
 {
 	const struct elem *elems = m->elems;
-	size_t i, total = 0;
+	size_t i, v, nbv = m->b.nbv, total = 0;
+	uint32_t *at;
 	int k, n;
 
-	/* sized once: growing by doubling costs as much as the puts */
-	for (i = 0; i < m->nelems; i++)
-		total += nverts(&elems[i]);
-	for (sm->cap = 1024; sm->cap < 2 * (total + 1);)
-		sm->cap *= 2;
-	sm->slot = xcalloc(sm->cap, sizeof(*sm->slot));
+	os->first = xcalloc(nbv + 2, sizeof(*os->first));
 	for (i = 0; i < m->nelems; i++)
 		for (n = nverts(&elems[i]), k = 0; k < n; k++)
-			sideput(sm, elems[i].v[k], elems[i].v[(k + 1) % n], 1);
+			os->first[elems[i].v[k] + 1]++;
+	for (v = 1; v <= nbv + 1; v++)
+		total = os->first[v] += os->first[v - 1];
+	os->to = xreallocarray(NULL, total + 1, sizeof(*os->to));
+	at = xreallocarray(NULL, nbv + 1, sizeof(*at));
+	memcpy(at, os->first, (nbv + 1) * sizeof(*at));
+	for (i = 0; i < m->nelems; i++)
+		for (n = nverts(&elems[i]), k = 0; k < n; k++)
+			os->to[at[elems[i].v[k]]++] = elems[i].v[(k + 1) % n];
+	free(at);
+}
+
+/* Whether an element has side a -> b. */
+int
+outsides_has(const struct outsides *os, uint32_t a, uint32_t b)
+{
+	uint32_t i;
+
+	for (i = os->first[a]; i < os->first[a + 1]; i++)
+		if (os->to[i] == b)
+			return 1;
+	return 0;
+}
+
+void
+outsides_free(struct outsides *os)
+{
+	free(os->first);
+	free(os->to);
 }
 
 /*
@@ -185,24 +215,24 @@ static void
 boundarysides(struct mesh *m, void (*each)(struct mesh *, uint32_t,
     uint32_t, uint32_t))
 {
-	struct sidemap all = { NULL, 0, 0 };
+	struct outsides all;
 	const struct elem *elems = m->elems;
 	size_t i;
 	uint32_t a, b, ring;
 	int k, n;
 
-	putsides(m, &all);
+	outsides_build(m, &all);
 	for (i = 0; i < m->nelems; i++)
 		for (n = nverts(&elems[i]), k = 0; k < n; k++) {
 			a = elems[i].v[k];
 			b = elems[i].v[(k + 1) % n];
-			if (sideget(&all, b, a) != 0)
+			if (outsides_has(&all, b, a))
 				continue;
 			/* a piece taken backwards: rings that cross */
 			ring = sidering(m, a, b);
 			each(m, a, b, ring);
 		}
-	free(all.slot);
+	outsides_free(&all);
 }
 
 static void

@@ -50,18 +50,18 @@ markboundary(struct join *jn)
 {
 	const struct mesh *m = jn->m;
 	const struct elem *elems = m->elems;
-	struct sidemap sm = { NULL, 0, 0 };
+	struct outsides os;
 	size_t i;
 	int k, n;
 
 	jn->vbnd = xcalloc(m->b.nbv + 1, 1);
-	putsides(m, &sm);
+	outsides_build(m, &os);
 	for (i = 0; i < m->nelems; i++)
 		for (n = nverts(&elems[i]), k = 0; k < n; k++)
-			if (sideget(&sm, elems[i].v[(k + 1) % n],
-			    elems[i].v[k]) == 0)
+			if (!outsides_has(&os, elems[i].v[(k + 1) % n],
+			    elems[i].v[k]))
 				jn->vbnd[elems[i].v[k]] = 1;
-	free(sm.slot);
+	outsides_free(&os);
 }
 
 /* Each vertex's elements, once, as they are before any collapse. */

@@ -83,6 +83,11 @@ struct ptab {			/* open addressing, for ptab_get and _put */
  * Directed sides a -> b of elements, as a table from the pair to a
  * number: the ring a side runs along, or 1 for every side.
  */
+/* The elements' sides by the vertex they leave: to[first[a] .. first[a+1]). */
+struct outsides {
+	uint32_t	*first, *to;
+};
+
 struct sidemap {
 	struct sideslot {
 		uint64_t	key;	/* a << 32 | b; 0: free */
@@ -221,7 +226,9 @@ void	 setelem(const struct bfit *, struct elem *, const uint32_t *, int);
 /* boundary.c: the side map, the region's boundary, the rings checked */
 void	 sideput(struct sidemap *, uint32_t, uint32_t, uint32_t);
 uint32_t sideget(const struct sidemap *, uint32_t, uint32_t);
-void	 putsides(const struct mesh *, struct sidemap *);
+void	 outsides_build(const struct mesh *, struct outsides *);
+int	 outsides_has(const struct outsides *, uint32_t, uint32_t);
+void	 outsides_free(struct outsides *);
 uint32_t sidering(struct mesh *, uint32_t, uint32_t);
 void	 checkboundary(struct mesh *, int);
 void	 bfitboundary(struct mesh *);
