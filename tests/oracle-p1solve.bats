@@ -95,3 +95,52 @@ square() {
 	b=$(awk '$1 == "max_error" { print $2 }' s6)
 	awk -v a="$a" -v b="$b" 'BEGIN { exit !(b < a / 2) }'
 }
+
+@test "l2_error and h1_error: the interpolant's errors on one square, as scipy's dblquad integrates them" {
+	# every node of a 1 by 1 grid is on the boundary: u_h interpolates u
+	# on the two triangles of [0.3, 0.55]^2 cut along x - 0.3 = y - 0.3
+	square 1 1 0.3 0.25 > one.qt
+	"$PY" "$TOP/tests/oracle/p1solve.py" one.qt > lap
+	"$PY" "$TOP/tests/oracle/p1solve.py" -p one.qt > poi
+	"$PY" - lap poi <<-'PY'
+	import math, sys
+	from scipy.integrate import dblquad
+	o, s = 0.3, 0.25
+	def check(path, u, ux, uy):
+	    got = dict(l.split() for l in open(path))
+	    a, b, c, d = u(o, o), u(o + s, o), u(o + s, o + s), u(o, o + s)
+	    # the interpolant's gradient on the lower triangle and the upper one
+	    glo, gup = ((b - a) / s, (c - b) / s), ((c - d) / s, (d - a) / s)
+	    lo = lambda y, x: a + glo[0] * (x - o) + glo[1] * (y - o)
+	    up = lambda y, x: a + gup[0] * (x - o) + gup[1] * (y - o)
+	    l2 = (dblquad(lambda y, x: (u(x, y) - lo(y, x)) ** 2, o, o + s, o, lambda x: x)[0] +
+	          dblquad(lambda y, x: (u(x, y) - up(y, x)) ** 2, o, o + s, lambda x: x, o + s)[0])
+	    h1 = (dblquad(lambda y, x: (ux(x, y) - glo[0]) ** 2 + (uy(x, y) - glo[1]) ** 2,
+	                  o, o + s, o, lambda x: x)[0] +
+	          dblquad(lambda y, x: (ux(x, y) - gup[0]) ** 2 + (uy(x, y) - gup[1]) ** 2,
+	                  o, o + s, lambda x: x, o + s)[0])
+	    for key, want in (("l2_error", math.sqrt(l2)), ("h1_error", math.sqrt(h1))):
+	        print(path, key, got[key], want)
+	        # a rule of degree 5 against adaptive quadrature: close, not equal
+	        if abs(float(got[key]) - want) > 1e-4 * want:
+	            sys.exit(1)
+	check(sys.argv[1], lambda x, y: math.exp(x) * math.sin(y),
+	      lambda x, y: math.exp(x) * math.sin(y), lambda x, y: math.exp(x) * math.cos(y))
+	check(sys.argv[2], lambda x, y: math.sin(3 * x) * math.sin(2 * y),
+	      lambda x, y: 3 * math.cos(3 * x) * math.sin(2 * y),
+	      lambda x, y: 2 * math.sin(3 * x) * math.cos(2 * y))
+	PY
+}
+
+@test "l2_error falls 4 times and h1_error 2 times per halving" {
+	for n in 8 16 32; do
+		square $n 1 > m$n.qt
+		"$PY" "$TOP/tests/oracle/p1solve.py" -p m$n.qt > s$n
+	done
+	awk '$1 == "l2_error" { l[++k] = $2 } $1 == "h1_error" { h[k] = $2 }
+	    END { for (i = 2; i <= k; i++) {
+		    printf "l2 %.3f h1 %.3f\n", l[i - 1] / l[i], h[i - 1] / h[i]
+		    if (l[i - 1] / l[i] < 3.7 || l[i - 1] / l[i] > 4.3 ||
+		        h[i - 1] / h[i] < 1.9 || h[i - 1] / h[i] > 2.1) bad = 1 }
+		  exit bad || k != 3 }' s8 s16 s32
+}

@@ -207,6 +207,18 @@ p1row() {
 		e[1] * t, e[2], prevp == "" ? "-" : sprintf("%.2f", prevp / e[2]),
 		e[2] * t }' "$3" "$4"
 }
+# The norms table's row: name, then the two p1solve outputs.
+normrow() {
+	awk -v name="$1" '
+	    FNR == 1 { f++ }
+	    $1 == "triangles" { t = $2 } $1 == "l2_error" { l[f] = $2 }
+	    $1 == "h1_error" { h[f] = $2 }
+	    END { printf "%-24s %9s %9.2e %8.3g %9.2e %8.3g %9.2e %8.3g %9.2e %8.3g\n",
+		name, t, l[1], l[1] * t, h[1], h[1] * sqrt(t), l[2], l[2] * t,
+		h[2], h[2] * sqrt(t) }' "$2" "$3" >> "$tmp/norms"
+}
+printf '%-24s %9s %9s %8s %9s %8s %9s %8s %9s %8s\n' mesher triangles \
+    L2 'L2*tris' H1 'H1*sqrt' 'L2 Poi' 'L2*tris' 'H1 Poi' 'H1*sqrt' > "$tmp/norms"
 prev= prevp=
 for l in 6 7 8; do
 	qtsplit -m $l -l $l "$tmp/amoeba.qt" | qtbalance | qtmesh -b > "$tmp/u$l.qt"
@@ -219,31 +231,39 @@ for l in 6 7 8; do
 	fi
 	p1row "qtree -m $l -l $l" "$(grep -c '^elem ' "$tmp/u$l.qt")" \
 	    "$tmp/p$l" "$tmp/q$l" "$prev" "$prevp"
+	normrow "qtree -m $l -l $l" "$tmp/p$l" "$tmp/q$l"
 	prev=$(awk '$1 == "max_error" { print $2 }' "$tmp/p$l")
 	prevp=$(awk '$1 == "max_error" { print $2 }' "$tmp/q$l")
 done
-[ -n "$GMSH" ] || exit 0
-area=$(qtstats "$tmp/amoeba.qt" | awk '$1 == "polygon_area" { print $2 }')
-univ=$(awk '$1 == "universe" { print $2, $3, $4; exit }' "$tmp/amoeba.qt")
-prev= prevp=
-for l in 6 7 8; do
-	# as many triangles as qtree's mesh at level l solves on
-	n=$(awk '$1 == "triangles" { print $2 }' "$tmp/p$l")
-	h=$(awk -v a="$area" -v n="$n" 'BEGIN { printf "%.6g", sqrt(a / (0.433 * n)) }')
-	gmshrun "$tmp/amoeba.qt" "$h"
-	got=$(msh2qt "$tmp/g.msh" "$univ" | grep -c '^elem ')
-	h=$(awk -v h="$h" -v n="$n" -v g="$got" 'BEGIN { printf "%.6g", h * sqrt(g / n) }')
-	gmshrun "$tmp/amoeba.qt" "$h"
-	msh2qt "$tmp/g.msh" "$univ" > "$tmp/g.qt"
-	if [ -n "$PY" ]; then
-		"$PY" tests/oracle/p1solve.py -n "$tmp/g.qt" > "$tmp/g.p"
-		"$PY" tests/oracle/p1solve.py -n -p "$tmp/g.qt" > "$tmp/g.q"
-	else
-		echo "triangles -" > "$tmp/g.p"
-		echo "triangles -" > "$tmp/g.q"
-	fi
-	p1row "gmsh -2 h=$h" "$(grep -c '^elem ' "$tmp/g.qt")" \
-	    "$tmp/g.p" "$tmp/g.q" "$prev" "$prevp"
-	prev=$(awk '$1 == "max_error" { print $2 }' "$tmp/g.p")
-	prevp=$(awk '$1 == "max_error" { print $2 }' "$tmp/g.q")
-done
+if [ -n "$GMSH" ]; then
+	area=$(qtstats "$tmp/amoeba.qt" | awk '$1 == "polygon_area" { print $2 }')
+	univ=$(awk '$1 == "universe" { print $2, $3, $4; exit }' "$tmp/amoeba.qt")
+	prev= prevp=
+	for l in 6 7 8; do
+		# as many triangles as qtree's mesh at level l solves on
+		n=$(awk '$1 == "triangles" { print $2 }' "$tmp/p$l")
+		h=$(awk -v a="$area" -v n="$n" 'BEGIN { printf "%.6g", sqrt(a / (0.433 * n)) }')
+		gmshrun "$tmp/amoeba.qt" "$h"
+		got=$(msh2qt "$tmp/g.msh" "$univ" | grep -c '^elem ')
+		h=$(awk -v h="$h" -v n="$n" -v g="$got" 'BEGIN { printf "%.6g", h * sqrt(g / n) }')
+		gmshrun "$tmp/amoeba.qt" "$h"
+		msh2qt "$tmp/g.msh" "$univ" > "$tmp/g.qt"
+		if [ -n "$PY" ]; then
+			"$PY" tests/oracle/p1solve.py -n "$tmp/g.qt" > "$tmp/g.p"
+			"$PY" tests/oracle/p1solve.py -n -p "$tmp/g.qt" > "$tmp/g.q"
+		else
+			echo "triangles -" > "$tmp/g.p"
+			echo "triangles -" > "$tmp/g.q"
+		fi
+		p1row "gmsh -2 h=$h" "$(grep -c '^elem ' "$tmp/g.qt")" \
+		    "$tmp/g.p" "$tmp/g.q" "$prev" "$prevp"
+		normrow "gmsh -2 h=$h" "$tmp/g.p" "$tmp/g.q"
+		prev=$(awk '$1 == "max_error" { print $2 }' "$tmp/g.p")
+		prevp=$(awk '$1 == "max_error" { print $2 }' "$tmp/g.q")
+	done
+fi
+echo
+echo "# The same solves in norms over the region (p1solve.py, a 7-point rule of degree 5 on each"
+echo "# triangle): the L2 norm of u_h - u, times the triangles, and the H1 seminorm (the energy"
+echo "# norm's error, first order in h), times their square root; Laplace's u, then Poisson's"
+cat "$tmp/norms"
