@@ -404,9 +404,12 @@ cut_cell(struct cutter *ct, const struct cell *c, double *frac)
 	descend(ct, level, c->ix, c->iy);
 	n = ct->n[level];
 	if (n == 0) {
-		*frac = ct->inside[level] ? 1 : 0;
+		if (frac != NULL)
+			*frac = ct->inside[level] ? 1 : 0;
 		return split_class(0, ct->inside[level]);
 	}
+	if (frac == NULL)	/* the class alone: no area */
+		return 'P';
 	x[0] = cell_coord(ct->u.x0, ct->u.size, level, c->ix);
 	x[1] = cell_coord(ct->u.x0, ct->u.size, level, c->ix + 1);
 	y[0] = cell_coord(ct->u.y0, ct->u.size, level, c->iy);

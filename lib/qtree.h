@@ -450,7 +450,8 @@ void	 area_moresult(const struct moments *, double *, double *, double *);
  * a cell's class by them and its area fraction, the share of the cell's
  * area in the region: 1 for F, 0 for E, and for P from the edges that
  * meet the cell, the quotient correctly rounded from an area computed to
- * about 150 bits (see qtleaves(1)).  A ring whose kind and direction
+ * about 150 bits (see qtleaves(1)); a null fraction pointer asks for the
+ * class alone, which costs no area.  A ring whose kind and direction
  * disagree (an outer ring clockwise) has its edges taken backwards.
  * cut_addarea adds a fraction times a cell's area exactly, the area of
  * the cell between its corners as qtree(5) defines them.  cut_loops

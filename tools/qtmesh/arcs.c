@@ -304,7 +304,6 @@ chordrings(struct mesh *m)
 {
 	struct bfit *b = &m->b;
 	char path[QT_GRID + 2];
-	double frac;
 	size_t i, w;
 	int maxlevel = 0;
 
@@ -331,7 +330,7 @@ chordrings(struct mesh *m)
 		c.iy = l->iy;
 		c.class = l->class;
 		c.path = cellpath(path, l->level, l->ix, l->iy);
-		l->class = cut_cell(b->cutter, &c, &frac);
+		l->class = cut_cell(b->cutter, &c, NULL);
 		if (l->class != 'E')
 			m->leaves[w++] = *l;
 	}

@@ -218,7 +218,7 @@ leafloops(struct mesh *m, const struct leaf *l)
 	const struct point *pts;
 	const size_t *len, *ring;
 	struct cell c;
-	double x[2], y[2], frac;
+	double x[2], y[2];
 	size_t j, k, n, at;
 	char class;
 
@@ -228,7 +228,7 @@ leafloops(struct mesh *m, const struct leaf *l)
 	c.iy = l->iy;
 	c.class = l->class;
 	c.path = cellpath(path, l->level, l->ix, l->iy);
-	if ((class = cut_cell(b->cutter, &c, &frac)) != l->class &&
+	if ((class = cut_cell(b->cutter, &c, NULL)) != l->class &&
 	    !b->hasarcs)
 		errat(m->inname, l->lineno, "leaf %s is %c, but the "
 		    "stream's rings make it %c: the rings are not the "
