@@ -132,3 +132,35 @@ oracle() {
 	polyread -u -1.5,-1.25,-1,3 "$SOLIDS/octa.off" | qtsplit -l 3 > t.q3
 	"$TOP/tests/check/solidcat" t.q3 | diff -u t.q3 -
 }
+
+# The path, at level $2, of the cell that holds point $3 (x y z, exact
+# rationals such as 1/3) in universe $1 (x0,y0,z0,size).
+pathto() {
+	python3 - "$@" <<-'PY'
+	import sys
+	from fractions import Fraction as F
+	x0, y0, z0, s = map(F, sys.argv[1].split(','))
+	lev = int(sys.argv[2])
+	i = [int((F(v) - o) / s * 2 ** lev) for v, o in
+	     zip(sys.argv[3].split(), (x0, y0, z0))]
+	print(''.join(str(sum((i[a] >> (lev - 1 - k) & 1) << a for a in range(3)))
+	    for k in range(lev)))
+	PY
+}
+
+@test "level 50: subtrees past double precision are the oracle's" {
+	# the tetrahedron's slanted face x + y + z = 1 at (1/3, 1/3, 1/3) and
+	# (1/5, 3/5, 1/5), and its edge from (1, 0, 0) to (0, 0, 1), in the
+	# grid plane y = 0, at (2/3, 0, 1/3): four levels below level 46
+	u=-0.25,-0.5,-0.125,2
+	polyread -u "$u" "$SOLIDS/tetra.off" > in.q3
+	for p in "1/3 1/3 1/3" "1/5 3/5 1/5" "2/3 0 1/3"; do
+		r=$(pathto "$u" 46 "$p")
+		[ ${#r} -eq 46 ]
+		python3 "$ORACLE" 50 0 "$r" < in.q3 > want
+		qtsplit -l 50 -r "$r" in.q3 | cells | diff -u want - || {
+			echo "at $p: $r"; return 1; }
+		# something to compare: the subtree is split to level 50
+		grep -q "^leaf [0-7]* 50 .* P$" want
+	done
+}

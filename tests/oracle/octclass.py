@@ -8,8 +8,10 @@
 # its centre in a direction drawn at random, drawn again whenever the ray
 # meets an edge or a vertex or runs in a triangle's plane.
 #
-#   python3 tests/oracle/octclass.py LEVEL [MINLEVEL] < stream
+#   python3 tests/oracle/octclass.py LEVEL [MINLEVEL [ROOT]] < stream
 #
+# With ROOT (a path, '.' for the universe), only the subtree of that cell:
+# a cell's class depends on the cell alone.
 # Prints the cells in preorder, one a line:
 #   node PATH LEVEL IX IY IZ
 #   leaf PATH LEVEL IX IY IZ CLASS
@@ -124,6 +126,7 @@ def inside(o, tris):
 def main():
     level = int(sys.argv[1])
     minlevel = int(sys.argv[2]) if len(sys.argv) > 2 else 0
+    root = sys.argv[3] if len(sys.argv) > 3 and sys.argv[3] != '.' else ''
     u, tris = readsolid(sys.stdin)
     out = []
 
@@ -146,7 +149,10 @@ def main():
             c = 'F' if inside(mid, tris) else 'E'
         out.append('leaf %s %d %d %d %d %s' % (name, lev, ix, iy, iz, c))
 
-    visit('', 0, 0, 0, 0)
+    ix = iy = iz = 0
+    for q in map(int, root):
+        ix, iy, iz = 2 * ix + (q & 1), 2 * iy + (q >> 1 & 1), 2 * iz + (q >> 2)
+    visit(root, len(root), ix, iy, iz)
     print('\n'.join(out))
 
 
