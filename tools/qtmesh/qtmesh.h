@@ -79,15 +79,15 @@ struct ptab {			/* open addressing, for ptab_get and _put */
 	size_t		 cap, n;
 };
 
-/*
- * Directed sides a -> b of elements, as a table from the pair to a
- * number: the ring a side runs along, or 1 for every side.
- */
 /* The elements' sides by the vertex they leave: to[first[a] .. first[a+1]). */
 struct outsides {
 	uint32_t	*first, *to;
 };
 
+/*
+ * Directed sides a -> b, as a table from the pair to a number: the ring
+ * a side runs along, or what refine.c keeps of a side.
+ */
 struct sidemap {
 	struct sideslot {
 		uint64_t	key;	/* a << 32 | b; 0: free */
