@@ -16,6 +16,8 @@
 #include "qtree.h"
 #include "qt2svg.h"
 
+#define MAXISO	10	/* the deepest merging level: 34 MB of lattice */
+
 struct cube {
 	uint64_t	 i[3];
 	unsigned char	 level, k;
@@ -57,13 +59,16 @@ edgepixels(int level)
 	return ldexp(isowidth() / sqrt(3), -level);
 }
 
-/* The deepest level whose cubes' edges are 1 pixel or more, at least 0. */
+/*
+ * The deepest level whose cubes' edges are 1 pixel or more, at least 0
+ * and at most MAXISO, which bounds the picture's lattice (faces()).
+ */
 static int
 mergelevel(void)
 {
 	int l = 0;
 
-	while (l < QT_MAXLEVEL && edgepixels(l + 1) >= 1)
+	while (l < MAXISO && edgepixels(l + 1) >= 1)
 		l++;
 	return l;
 }
@@ -242,77 +247,275 @@ isoy(double u, double v, double w)
 	    sqrt(12));
 }
 
-/* A face: its corners from the one nearest the origin, round. */
+/*
+ * A number of a path's data, as short as SVG reads it: no space before a
+ * minus sign or after a command letter, no 0 before a point.
+ */
+static char *
+putnum(char *p, long long v, int sep)
+{
+	char tmp[32], *t = tmp;
+
+	fmthund(tmp, v);
+	if (t[0] == '-')
+		*p++ = *t++;
+	else if (sep)
+		*p++ = ' ';
+	if (t[0] == '0' && t[1] == '.')
+		t++;
+	while (*t != '\0')
+		*p++ = *t++;
+	return p;
+}
+
+/*
+ * A face: its corners from the one nearest the origin, round.  The first
+ * face of a path element starts at its corner, the next ones relative to
+ * the corner the one before started at, where its z left the pen.
+ */
 static void
 face(struct layer *ly, const struct cube *c, int axis)
 {
 	static const int step[4][2] = {	/* along the other two axes */
 		{ 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }
 	};
-	double s = ldexp(1, -c->level), p[3];
+	static long long px, py;
+	double s = ldexp(1, -c->level), q[3];
 	long long x[4], y[4];
+	char buf[256], *p = buf;
 	int k, a, b;
 
 	a = axis == 0 ? 1 : 0;
 	b = axis == 2 ? 1 : 2;
 	for (k = 0; k < 4; k++) {
-		p[axis] = (double)(c->i[axis] + 1) * s;
-		p[a] = (double)(c->i[a] + step[k][0]) * s;
-		p[b] = (double)(c->i[b] + step[k][1]) * s;
-		x[k] = isox(p[0], p[1]);
-		y[k] = isoy(p[0], p[1], p[2]);
+		q[axis] = (double)(c->i[axis] + 1) * s;
+		q[a] = (double)(c->i[a] + step[k][0]) * s;
+		q[b] = (double)(c->i[b] + step[k][1]) * s;
+		x[k] = isox(q[0], q[1]);
+		y[k] = isoy(q[0], q[1], q[2]);
 	}
 	subpath(ly);
-	out("M", 1);
-	outxy(x[0], y[0]);
-	out("l", 1);
-	for (k = 1; k < 4; k++) {
-		if (k > 1)
-			out(" ", 1);
-		outxy(x[k] - x[k - 1], y[k] - y[k - 1]);
+	if ((ly->n - 1) % CHUNK == 0) {
+		*p++ = 'M';
+		p = putnum(p, x[0], 0);
+		p = putnum(p, y[0], 1);
+		*p++ = 'l';
+		k = 0;
+	} else {
+		*p++ = 'm';
+		p = putnum(p, x[0] - px, 0);
+		p = putnum(p, y[0] - py, 1);
+		k = 1;
 	}
-	out("z", 1);
+	for (a = 1; a < 4; a++, k = 1) {
+		p = putnum(p, x[a] - x[a - 1], k);
+		p = putnum(p, y[a] - y[a - 1], 1);
+	}
+	*p++ = 'z';
+	out(buf, p - buf);
+	px = x[0];
+	py = y[0];
 }
 
 /*
- * The faces, cube by cube in stream order; a path element holds the
- * faces of one colour and level that come one after another.
+ * A face waiting in a batch: its cube, its direction, and the ranges of
+ * x - z, y - z and x - y over it, in cubes of the merging level.  Those
+ * three are constant along the view, and a face's edges run along the
+ * lines where one of them is, so two faces overlap in the picture exactly
+ * when all three ranges overlap.
+ */
+struct face {
+	const struct cube *c;
+	int		 axis;
+	int64_t		 lo[3], hi[3];
+};
+
+#define BATCH	256
+
+static struct {
+	struct face	 f[BATCH];
+	int		 n;
+	struct layer	 ly;
+	const char	*last;
+} fb = { .ly = { "<g id=\"faces\" stroke=\"#000000\" stroke-opacity="
+    "\"0.35\" stroke-linejoin=\"round\">\n", 0, "", 0 } };
+
+static void
+faceranges(struct face *f)
+{
+	int sh = iso.lb - f->c->level;
+	int64_t a = (int64_t)f->c->i[0] << sh, b = (int64_t)f->c->i[1] << sh;
+	int64_t c = (int64_t)f->c->i[2] << sh, s = (int64_t)1 << sh;
+	int64_t mid[3] = { a - c, b - c, a - b };
+	int k;
+
+	/* the cube's own ranges, then the face's part of them */
+	for (k = 0; k < 3; k++) {
+		f->lo[k] = mid[k] - s;
+		f->hi[k] = mid[k] + s;
+	}
+	switch (f->axis) {
+	case 0:		/* x = a + s: x - z from a - c up, x - y from a - b */
+		f->lo[0] = mid[0];
+		f->lo[2] = mid[2];
+		break;
+	case 1:		/* y = b + s */
+		f->lo[1] = mid[1];
+		f->hi[2] = mid[2];
+		break;
+	default:	/* z = c + s */
+		f->hi[0] = mid[0];
+		f->hi[1] = mid[1];
+		break;
+	}
+}
+
+static int
+overlap(const struct face *f, const struct face *g)
+{
+	int k;
+
+	for (k = 0; k < 3; k++)
+		if (f->lo[k] >= g->hi[k] || g->lo[k] >= f->hi[k])
+			return 0;
+	return 1;
+}
+
+static const char *
+faceattrs(const struct cube *c, int axis)
+{
+	static char attrs[NCLASS][3][QT_MAXLEVEL + 1][96];
+	char *at = attrs[c->k][axis][c->level], w[32];
+	double e = edgepixels(c->level);
+
+	if (at[0] == '\0') {
+		if (e >= 2)
+			fmthund(w, hund(e / 8 < 1 ? e / 8 : 1));
+		snprintf(at, sizeof(attrs[0][0][0]), "fill=\"%s\" %s%s%s",
+		    facecolour[c->k][axis], e >= 2 ? "stroke-width=\"" :
+		    "stroke=\"none", e >= 2 ? w : "", "\" ");
+	}
+	return at;
+}
+
+/*
+ * The batch's faces, which do not overlap one another, so that any order
+ * of them is as good as the stream's: a colour and level at a time, each
+ * one path element.
+ */
+static void
+flushfaces(void)
+{
+	int j, m;
+
+	for (j = 0; j < fb.n; j++) {
+		const char *at;
+
+		if (fb.f[j].c == NULL)
+			continue;
+		at = faceattrs(fb.f[j].c, fb.f[j].axis);
+		if (at != fb.last)
+			pathattrs(&fb.ly, at);
+		fb.last = at;
+		for (m = j; m < fb.n; m++)
+			if (fb.f[m].c != NULL &&
+			    faceattrs(fb.f[m].c, fb.f[m].axis) == at) {
+				face(&fb.ly, fb.f[m].c, fb.f[m].axis);
+				fb.f[m].c = NULL;
+			}
+	}
+	fb.n = 0;
+}
+
+/*
+ * The picture's lattice: in cubes of the merging level, a point's x - z
+ * and y - z are its coordinates p, q on the picture, and the lines where
+ * p, q or p - q is whole cut the picture into triangles, two a unit cell
+ * of p and q, 0 below its diagonal and 1 above.  A face of the merging
+ * level covers two of them, and a larger face those of the faces of that
+ * level it is made of.  Faces come back to front, so a triangle shows the
+ * last face that covers it; a face that shows in none is left out.
+ */
+static void
+showface(uint32_t *own, uint32_t id, const struct cube *c, int axis)
+{
+	static const int tri[3][2][3] = {	/* p, q offsets, triangle */
+		{ { 0, -1, 1 }, { 0, 0, 0 } },
+		{ { -1, 0, 0 }, { 0, 0, 1 } },
+		{ { -1, -1, 0 }, { -1, -1, 1 } },
+	};
+	int sh = iso.lb - c->level, a, b, k;
+	int64_t side = (int64_t)1 << iso.lb, w = 2 * side + 1, s = 1 << sh;
+	int64_t o[3], u[3], j, m;
+
+	a = axis == 0 ? 1 : 0;
+	b = axis == 2 ? 1 : 2;
+	for (k = 0; k < 3; k++)
+		o[k] = (int64_t)c->i[k] << sh;
+	o[axis] += s - 1;
+	memcpy(u, o, sizeof(u));
+	for (j = 0; j < s; j++)
+		for (m = 0; m < s; m++) {
+			u[a] = o[a] + j;
+			u[b] = o[b] + m;
+			for (k = 0; k < 2; k++) {
+				const int *t = tri[axis][k];
+				int64_t p = u[0] - u[2] + t[0] + side;
+				int64_t q = u[1] - u[2] + t[1] + side;
+
+				own[2 * (p * w + q) + t[2]] = id;
+			}
+		}
+}
+
+/*
+ * The faces, cube by cube in stream order: those that no kept cube
+ * covers, then of those the ones that show.  They are drawn in that
+ * order, gathered into batches of faces that do not overlap one
+ * another, so that few path elements hold them; a face that overlaps one
+ * of the batch starts the next batch.
  */
 static void
 faces(void)
 {
-	static char attrs[NCLASS][3][QT_MAXLEVEL + 1][96];
-	struct layer ly = { "<g id=\"faces\" stroke=\"#000000\" "
-	    "stroke-opacity=\"0.35\" stroke-linejoin=\"round\">\n", 0, "", 0 };
-	const char *last = NULL;
-	size_t m;
-	int axis;
+	struct face *cand = NULL;
+	size_t n = 0, cap = 0, m, w = ((size_t)2 << iso.lb) + 1;
+	uint32_t *own = xcalloc(2 * w * w, sizeof(*own));
+	unsigned char *shown;
+	int axis, j;
 
-	for (m = 0; m < iso.n; m++) {
-		const struct cube *c = &iso.c[m];
-
+	for (m = 0; m < iso.n; m++)
 		for (axis = 0; axis < 3; axis++) {
-			char *at = attrs[c->k][axis][c->level], w[32];
-			double e = edgepixels(c->level);
-
-			if (covered(c, axis))
+			if (covered(&iso.c[m], axis))
 				continue;
-			if (at[0] == '\0') {
-				if (e >= 2)
-					fmthund(w, hund(e / 8 < 1 ? e / 8 : 1));
-				snprintf(at, sizeof(attrs[0][0][0]),
-				    "fill=\"%s\" %s%s%s", facecolour[c->k][axis],
-				    e >= 2 ? "stroke-width=\"" : "stroke=\"none",
-				    e >= 2 ? w : "", "\" ");
-			}
-			if (at != last)
-				pathattrs(&ly, at);
-			last = at;
-			face(&ly, c, axis);
-			iso.faces[c->k]++;
+			cand = xgrow(cand, &cap, n + 1, sizeof(*cand));
+			cand[n].c = &iso.c[m];
+			cand[n].axis = axis;
+			if (n == UINT32_MAX - 1)
+				die(1, "more than 2^32 faces to draw");
+			showface(own, (uint32_t)++n, &iso.c[m], axis);
 		}
+	shown = xcalloc(n + 1, 1);
+	for (m = 0; m < 2 * w * w; m++)
+		shown[own[m]] = 1;
+	free(own);
+	for (m = 0; m < n; m++) {
+		struct face f = cand[m];
+
+		if (!shown[m + 1])
+			continue;
+		faceranges(&f);
+		for (j = 0; j < fb.n && !overlap(&f, &fb.f[j]); j++)
+			;
+		if (j < fb.n || fb.n == BATCH)
+			flushfaces();
+		fb.f[fb.n++] = f;
+		iso.faces[f.c->k]++;
 	}
-	layerend(&ly);
+	flushfaces();
+	layerend(&fb.ly);
+	free(shown);
+	free(cand);
 }
 
 static void
