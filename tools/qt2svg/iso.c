@@ -536,10 +536,13 @@ isolegend(void)
 		legendrow(row++, swatch, text, iso.faces[k]);
 	}
 	fmtint(num, pic.level >= 0 ? pic.level : pic.deepest);
-	snprintf(text, sizeof(text), "level %s, leaves below level %d "
-	    "merged; x down left, y down right, z up", num, iso.lb);
+	snprintf(text, sizeof(text), "level %s, merged below level %d", num,
+	    iso.lb);
 	legendtext((long long)opt.margin * 100, mapbottom() +
-	    (long long)(ROW * row + 2) * 100, NULL, text);
+	    (long long)(ROW * row++ + 2) * 100, NULL, text);
+	legendtext((long long)opt.margin * 100, mapbottom() +
+	    (long long)(ROW * row + 2) * 100, NULL,
+	    "x down left, y down right, z up");
 	outs("</g>\n");
 }
 
@@ -548,7 +551,7 @@ isodraw(double z0)
 {
 	char x0[32], y0[32], zz[32], size[32];
 	long long height;
-	int rows = 1 + opt.drawn[CF] + opt.drawn[CP];
+	int rows = 2 + opt.drawn[CF] + opt.drawn[CP];
 
 	if (iso.lb < 0)
 		iso.lb = mergelevel();
