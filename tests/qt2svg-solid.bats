@@ -272,3 +272,20 @@ pixels() {
 	cat o.q3 | qt2svg -z 0.25 > b.svg
 	cmp a.svg b.svg
 }
+
+@test "the man page's 3D example runs as printed, its counts those of the oracle" {
+	ln -s "$TOP/tests" tests
+	sed -n '/^\$ polyread tests\/solids\/octa.off/,/^\.Ed/p' "$TOP/man/qt2svg.1" |
+	    sed 's/\\e/\\/g' | awk '/^\.Ed/ { exit }
+	    /^\$ / { sub(/^\$ /, ""); print > "cmd"; c = 1; next }
+	    /^    / && c { print > "cmd"; next }
+	    { c = 0; print > "page" }'
+	[ -s cmd ] && [ -s page ]
+	bash cmd > got
+	diff -u page got
+	[ -s slice.svg ]
+	python3 "$ISOVIEW" faces 4 < octa.q3 | awk '$1 == "P" { print $3 }' |
+	    sort -u > want
+	awk '{ print $2 }' page | sort -u > fromfills
+	diff -u want fromfills
+}
