@@ -88,6 +88,15 @@ pixels() {
 			done
 		done
 	done
+	# a universe off the solid's corner
+	for m in tetra void; do
+		polyread -u -1.5,-1.25,-1,8 "$SOLIDS/$m.off" | qtsplit -l 4 > t.q3
+		for z in -1 0 0.5 1 2.75 6.99; do
+			qt2svg -z $z t.q3 | squares > got
+			cutleaves $z t.q3 > want
+			diff -u want got
+		done
+	done
 	# the hand's count: the cube [1, 3]^3 in the universe of side 4 at
 	# level 1 meets all eight children, four of them at z = 1
 	printf 'F 0\nE 0\nP 4\n' > want
