@@ -5,8 +5,10 @@
  * than the level whose cubes' edges are still a pixel long are merged into
  * their ancestor at that level, as 2D leaves into blocks, so that the
  * picture, not the tree, bounds the file.  The cubes are kept in stream
- * order, preorder, which is a back-to-front order for this view, and a
- * face is left out when the kept cubes across it cover it whole.
+ * order, preorder, which is a back-to-front order for this view.  A face
+ * is left out when the kept cubes across it cover it whole, or when it
+ * shows in no triangle of the picture's lattice (faces()); the others are
+ * drawn in that order, in batches of faces that do not overlap.
  */
 #include <math.h>
 #include <stdio.h>
