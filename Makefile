@@ -61,10 +61,11 @@ $(QTSTATSOBJ): $(QTREEH) tools/qtstats/qtstats.h
 qtstats: $(QTSTATSOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QTSTATSOBJ) lib/libqtree.a $(LDLIBS)
 # qt2svg too: main.c, out.c, window.c, leaves.c, rings.c, mesh.c,
-# quality.c, legend.c.
+# quality.c, legend.c, solid.c, iso.c.
 QT2SVGOBJ = tools/qt2svg/main.o tools/qt2svg/out.o tools/qt2svg/window.o \
 	tools/qt2svg/leaves.o tools/qt2svg/rings.o tools/qt2svg/mesh.o \
-	tools/qt2svg/quality.o tools/qt2svg/legend.o
+	tools/qt2svg/quality.o tools/qt2svg/legend.o tools/qt2svg/solid.o \
+	tools/qt2svg/iso.o
 $(QT2SVGOBJ): $(QTREEH) tools/qt2svg/qt2svg.h
 qt2svg: $(QT2SVGOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QT2SVGOBJ) lib/libqtree.a $(LDLIBS)

@@ -12,7 +12,7 @@
 #include "qtree.h"
 #include "qt2svg.h"
 
-static void
+void
 legendrow(int row, const char *swatch, const char *text, long long count)
 {
 	char num[24];
@@ -160,7 +160,7 @@ legendscale(int row)
 
 #define BINW	30	/* the width of a bin of -q's scale, pixels */
 
-static void
+void
 legendtext(long long x, long long top, const char *anchor, const char *text)
 {
 	outs("<text x=\"");

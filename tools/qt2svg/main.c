@@ -35,7 +35,7 @@ static void
 usage(int help)
 {
 	usageexit(help, "usage: qt2svg [-hnNqv] [-b x0,y0,x1,y1] [-c classes] "
-	    "[-m margin] [-w width] [file]\n");
+	    "[-m margin] [-w width] [-z z] [file]\n");
 }
 
 static void
@@ -52,6 +52,10 @@ svghead(long long height)
 	fmtreal(size, pic.u.size);
 	printf("<desc>universe %s %s %s, window ", x0, y0, size);
 	outwindow(1);
+	if (opt.zflag) {
+		fmtreal(x0, opt.z);
+		printf(", slice z = %s", x0);
+	}
 	outs(", drawn by qt2svg</desc>\n");
 	outs("<rect width=\"100%\" height=\"100%\" fill=\"#FFFFFF\"/>\n");
 	/* Rings and the mesh are cut at the map, with room for strokes. */
@@ -79,7 +83,7 @@ svghead(long long height)
 	outs("</defs>\n");
 }
 
-static void
+void
 writesvg(void)
 {
 	struct window *w = &pic.win;
@@ -131,6 +135,18 @@ pixels(int ch, const char *arg, long long lo)
 	return v;
 }
 
+/* -z z: a slice of a 3D stream */
+static void
+optslice(const char *arg)
+{
+	const char *end;
+
+	if (parsereal(arg, &end, &opt.z) < 0 || !parsecoordok(opt.z) ||
+	    *end != '\0')
+		die(2, "-z: a slice's z is a number: %s", arg);
+	opt.zflag = 1;
+}
+
 /* -b x0,y0,x1,y1 */
 static void
 optwindow(const char *arg)
@@ -165,7 +181,7 @@ main(int argc, char *argv[])
 
 	xsetprogname(argv[0]);
 	setdrawn(cell_optclasses("FEP"));
-	while ((ch = getopt(argc, argv, "b:c:m:nNqvw:h")) != -1)
+	while ((ch = getopt(argc, argv, "b:c:m:nNqvw:z:h")) != -1)
 		switch (ch) {
 		case 'b':
 			optwindow(optarg);
@@ -191,6 +207,9 @@ main(int argc, char *argv[])
 		case 'w':
 			opt.width = pixels(ch, optarg, 1);
 			break;
+		case 'z':
+			optslice(optarg);
+			break;
 		default:
 			usage(ch == 'h');
 		}
@@ -202,10 +221,15 @@ main(int argc, char *argv[])
 		die(2, "-m %d leaves no room in -w %d", opt.margin, opt.width);
 
 	r = qt_openpath(argc == 1 ? argv[0] : "-", QT_ARCS |
-	    QT_NEEDUNIVERSE | (verbose ? QT_VERBOSE : 0));
+	    QT_NEEDUNIVERSE | QT_SOLIDS | (verbose ? QT_VERBOSE : 0));
 	while ((kind = qt_read(r, &rec)) != QT_EOF) {
 		switch (kind) {
+		case QT_SOLID:	/* a 3D stream: solid.c */
+			return solidmain(r);
 		case QT_UNIVERSE:
+			if (opt.zflag)
+				die(2, "-z: %s is a 2D stream, which has no z",
+				    qt_name(r));
 			pic.u = rec.u;
 			if (opt.bflag)
 				rectwindow();

@@ -41,6 +41,8 @@ struct options {
 	int	qflag;		/* -q: elements by their smallest angle */
 	int	bflag;		/* -b: a window */
 	double	bx0, by0, bx1, by1;
+	int	zflag;		/* -z: a 3D stream's slice */
+	double	z;
 };
 
 /* A leaf of 2 pixels or more, drawn as its own square. */
@@ -192,6 +194,9 @@ outcode(long long x, long long y)
 	    (x > pic.clipbox[2]) << 2 | (y > pic.clipbox[3]) << 3;
 }
 
+/* main.c */
+void	 writesvg(void);
+
 /* out.c */
 char	*fmthund(char *, long long);
 void	 out(const char *, size_t);
@@ -240,6 +245,15 @@ double	 smallestangle(const unsigned long long *);
 int	 anglebin(const unsigned long long *);
 
 /* legend.c */
+void	 legendrow(int, const char *, const char *, long long);
+void	 legendtext(long long, long long, const char *, const char *);
 int	 legendrows(void);
 void	 outwindow(int);
 void	 legend(void);
+
+/* solid.c */
+int	 solidmain(struct qtreader *);
+
+/* iso.c */
+void	 isocell(const struct cell3 *);
+void	 isodraw(double);
