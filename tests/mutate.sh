@@ -73,6 +73,9 @@ git ls-files -co --exclude-standard | while IFS= read -r f; do
 	[ -f "$f" ] || continue		# deleted, not yet committed
 	mkdir -p "$tree/$(dirname "$f")" && cp -p "$f" "$tree/$f" || exit 2
 done || exit 2
+# a repository of its own, for the tests that ask git which files are
+# the project's (tests/house.bats)
+(cd "$tree" && git init -q && git add -A) || exit 2
 [ -d "$top/../shared" ] && ln -s "$(cd "$top/../shared" && pwd)" "$tmp/shared"
 
 # The list, one directory a mutant: m/N/name, file, tests, equiv, and
