@@ -173,9 +173,11 @@ bench: all tools/bench/numbench
 	sh tools/bench/bench.sh
 
 # qtree against p4est and CGAL, each when installed: counts checked, one
-# table of seconds (tools/bench/benchpeers.sh).
+# table of seconds (tools/bench/benchpeers.sh); octrees against CGAL's
+# Octree on CGAL's meshes, seconds and memory (tools/bench/benchpeers3.sh).
 bench-peers: all
 	sh tools/bench/benchpeers.sh
+	sh tools/bench/benchpeers3.sh
 
 # Shards against one run: parallel -k | qtcat, shard files and one qtcat,
 # the figures by qtstats -s and -m, at -j 1 and -j 2, cut at levels 2 and

@@ -218,3 +218,61 @@ cubeformats() {
 	run -1 --separate-stderr polyread -f ply o.txt
 	[ "$stderr" = "polyread: o.txt:1: not PLY: the first line is not ply" ]
 }
+
+@test "COFF, NOFF and STCNOFF headers are OFF, the colours and normals after a vertex ignored" {
+	polyread "$SOLIDS/cube.off" > want
+	for h in COFF NOFF CNOFF STCNOFF; do
+		awk -v h=$h 'NR == 1 { print h; next }
+		    NR > 2 && NF == 3 { print $0, "0.5 0.25 0.125 1"; next }
+		    { print }' "$SOLIDS/cube.off" > c.off
+		polyread c.off | diff -u want - || { echo "$h"; return 1; }
+	done
+	# 4OFF and nOFF give another dimension: not OFF
+	sed '1s/.*/4OFF/' "$SOLIDS/cube.off" > c.off
+	run -1 --separate-stderr polyread -f off c.off
+	[ "$stderr" = "polyread: c.off:1: expected OFF: 4OFF" ]
+}
+
+# The L-shaped prism of CGAL's corner_poly.off, drawn again: the square
+# [0, 2]^2 less [0, 1]^2, z from -1 to 1, its top and bottom hexagons
+# starting at the re-entrant corner's neighbour (0, 1), whose fan leaves
+# the L.  Volume 3 x 2 = 6.
+lprism() {
+	printf 'OFF\n12 8 0\n'
+	printf '%s\n' '0 1 1' '1 1 1' '1 0 1' '2 0 1' '2 2 1' '0 2 1' \
+	    '0 1 -1' '1 1 -1' '1 0 -1' '2 0 -1' '2 2 -1' '0 2 -1'
+	printf '%s\n' '6 0 1 2 3 4 5' '6 6 11 10 9 8 7' '4 0 6 7 1' \
+	    '4 1 7 8 2' '4 2 8 9 3' '4 3 9 10 4' '4 4 10 11 5' '4 5 11 6 0'
+}
+
+@test "a polygon that is not convex is cut into triangles inside it, not fanned" {
+	lprism > l.off
+	polyread l.off > l.q3
+	qtstats l.q3 | grep '^polyhedron_volume' > got
+	echo "polyhedron_volume 6" | diff -u - got
+	# the top's four triangles all face up, the bottom's down: a fan of
+	# the hexagon from (0, 1) would have one of them facing the other way
+	awk '$1 == "v" { n++; x[n] = $2; y[n] = $3; z[n] = $4 }
+	    $1 == "f" && z[$2] == z[$3] && z[$3] == z[$4] {
+		nz = (x[$3] - x[$2]) * (y[$4] - y[$2]) - (y[$3] - y[$2]) * (x[$4] - x[$2])
+		print z[$2], (nz > 0 ? "up" : "down") }' l.q3 | sort | uniq -c |
+	    awk '{ print $1, $2, $3 }' > got
+	printf '4 -1 down\n4 1 up\n' | diff -u - got
+}
+
+@test "a polygon with corners on a line from its first is cut without a flat triangle" {
+	# the unit cube, the middle of its edge (0 0 0) (1 0 0) a corner of
+	# the front and bottom faces, each starting at (0 0 0): their fans
+	# would begin or end with the flat triangle of that edge.  Volume 1.
+	printf 'OFF\n9 6 0\n' > m.off
+	printf '%s\n' '0 0 0' '1 0 0' '1 1 0' '0 1 0' '0 0 1' '1 0 1' '1 1 1' \
+	    '0 1 1' '0.5 0 0' >> m.off
+	printf '%s\n' '5 0 3 2 1 8' '4 4 5 6 7' '5 0 8 1 5 4' '4 1 2 6 5' \
+	    '4 2 3 7 6' '4 3 0 4 7' >> m.off
+	polyread m.off > m.q3
+	qtstats m.q3 | grep '^polyhedron_volume' > got
+	echo "polyhedron_volume 1" | diff -u - got
+	# 2 + 3 + 3 + 2 + 2 + 2 triangles
+	awk '$1 == "shell" { print $4, $5 }' m.q3 > got
+	echo "9 14" | diff -u - got
+}

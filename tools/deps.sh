@@ -41,6 +41,7 @@ list() {
 	reader libp4est-dev	[ -f /usr/include/p4est_extended.h ]
 	reader libopenmpi-dev	have mpicc
 	reader libcgal-dev	[ -f /usr/include/CGAL/version.h ]
+	reader libcgal-demo	[ -f /usr/share/doc/libcgal-dev/data.tar.gz ]
 	reader python3-meshio	meshio
 	reader python3-scipy	scipy
 	reader gmsh		have gmsh

@@ -50,7 +50,11 @@ addpoint3(struct input *in, const char *file, long line, double x, double y,
 	return s->nv++;
 }
 
-/* A polygon of n points, fanned from its first into n - 2 triangles. */
+/*
+ * A polygon of n points, fanned from its first into n - 2 triangles;
+ * unfan, before the checks, cuts the polygons whose fan is not a
+ * triangulation of them in another way.
+ */
 void
 addpoly3(struct input *in, const char *file, long line, const size_t *v,
     size_t n)
@@ -195,6 +199,133 @@ flataxis(struct point3 a, struct point3 b, struct point3 c)
 		if (normalsign(a, b, c, axis) != 0)
 			return axis;
 	return -1;
+}
+
+/*
+ * Whether projected point p lies in the closed triangle a, b, c of
+ * orientation o (1 or -1) along axis.
+ */
+static int
+intriangle(struct point3 a, struct point3 b, struct point3 c,
+    struct point3 p, int axis, int o)
+{
+	return normalsign(a, b, p, axis) * o >= 0 &&
+	    normalsign(b, c, p, axis) * o >= 0 &&
+	    normalsign(c, a, p, axis) * o >= 0;
+}
+
+/*
+ * Polygon faces[f .. f + m - 1]'s n = m + 2 corners cut into triangles by
+ * ear clipping, projected along the axis of its normal's largest
+ * component (Newell's), where it runs with orientation o: an ear is a
+ * corner where the polygon turns by o and whose triangle holds no other
+ * corner.  Taking the ears from the first corner's next on, a convex
+ * polygon is cut into its fan.  Returns 0, the faces left alone, when no
+ * ear is found (a polygon that crosses itself, or is not flat).
+ */
+static int
+earclip3(size_t f, size_t m, int axis, int o)
+{
+	size_t n = m + 2, *c = xreallocarray(NULL, n, sizeof(*c));
+	struct face3 *out = xreallocarray(NULL, m, sizeof(*out));
+	size_t i, j, k, left = n, nout = 0;
+
+	c[0] = S->f[f].v[0];
+	c[1] = S->f[f].v[1];
+	for (i = 0; i < m; i++)
+		c[i + 2] = S->f[f + i].v[2];
+	j = 1;
+	while (left > 3) {
+		for (k = 0; k < left; k++, j = j % (left - 1) + 1) {
+			size_t a = c[j - 1], b = c[j], d = c[(j + 1) % left];
+			struct point3 pa = S->v[a], pb = S->v[b], pd = S->v[d];
+
+			if (normalsign(pa, pb, pd, axis) != o)
+				continue;
+			for (i = 0; i < left; i++) {
+				struct point3 q = S->v[c[i]];
+
+				if (c[i] == a || c[i] == b || c[i] == d ||
+				    pointcmp3(&q, &pa) == 0 ||
+				    pointcmp3(&q, &pb) == 0 ||
+				    pointcmp3(&q, &pd) == 0)
+					continue;
+				if (intriangle(pa, pb, pd, q, axis, o))
+					break;
+			}
+			if (i == left)
+				break;
+		}
+		if (k == left) {
+			free(c);
+			free(out);
+			return 0;
+		}
+		out[nout] = S->f[f];
+		out[nout].v[0] = c[j - 1];
+		out[nout].v[1] = c[j];
+		out[nout++].v[2] = c[(j + 1) % left];
+		memmove(&c[j], &c[j + 1], (left - j - 1) * sizeof(*c));
+		left--;
+		if (j > 1)
+			j--;
+		if (j >= left)
+			j = 1;
+	}
+	out[nout] = S->f[f];
+	out[nout].v[0] = c[0];
+	out[nout].v[1] = c[1];
+	out[nout++].v[2] = c[2];
+	memcpy(&S->f[f], out, m * sizeof(*out));
+	free(c);
+	free(out);
+	return 1;
+}
+
+/*
+ * A polygon's fan is a triangulation of it when its triangles all turn
+ * the polygon's way in its projection; else (a polygon not convex, or
+ * with corners on a line from its first) it is cut by earclip3.
+ */
+static void
+unfan(void)
+{
+	size_t f, m, i;
+
+	for (f = 0; f < S->nf; f += m) {
+		double nrm[3] = { 0, 0, 0 };
+		int axis, o;
+
+		for (m = 1; f + m < S->nf && S->f[f + m].poly == S->f[f].poly;
+		    m++)
+			continue;
+		if (m == 1)
+			continue;
+		/* Newell's normal: only which projection is widest */
+		for (i = 0; i < m + 2; i++) {
+			size_t a = i == 0 ? S->f[f].v[0] : i == 1 ?
+			    S->f[f].v[1] : S->f[f + i - 2].v[2];
+			size_t b = i + 1 == m + 2 ? S->f[f].v[0] : i == 0 ?
+			    S->f[f].v[1] : S->f[f + i - 1].v[2];
+			struct point3 p = S->v[a], q = S->v[b];
+
+			nrm[0] += (p.y - q.y) * (p.z + q.z);
+			nrm[1] += (p.z - q.z) * (p.x + q.x);
+			nrm[2] += (p.x - q.x) * (p.y + q.y);
+		}
+		axis = fabs(nrm[0]) > fabs(nrm[1]) ? 0 : 1;
+		if (fabs(nrm[2]) > fabs(nrm[axis]))
+			axis = 2;
+		if (nrm[axis] == 0)
+			continue;
+		o = nrm[axis] > 0 ? 1 : -1;
+		for (i = 0; i < m; i++)
+			if (normalsign(P(f + i, 0), P(f + i, 1), P(f + i, 2),
+			    axis) != o)
+				break;
+		if (i < m)
+			earclip3(f, m, axis, o);
+	}
 }
 
 static void
@@ -738,6 +869,7 @@ check3(struct input *in)
 		die(1, "no faces in the input");
 	if (verbose)
 		progress(1, "%zu points, %zu triangles read", S->nv, S->nf);
+	unfan();
 	weld();
 	degenerate();
 	edges();

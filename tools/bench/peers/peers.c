@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -51,6 +52,49 @@ peer_read(const char *path, struct poly *p)
 	qt_close(r);
 	if (p->n > UINT32_MAX)
 		die(1, "too many edges: %zu", p->n);
+}
+
+/* The shells of a 3D stream, as one list of vertices and one of triangles. */
+void
+peer_read3(const char *path, struct solid *s)
+{
+	struct qtreader *r = qt_openpath(path, QT_NEEDUNIVERSE | QT_SOLIDS);
+	struct qt3reader *r3;
+	struct qt3rec rec;
+	struct qtrec rec2;
+	size_t i;
+
+	memset(s, 0, sizeof(*s));
+	if (qt_read(r, &rec2) != QT_SOLID)
+		die(1, "%s: not a 3D stream", path);
+	r3 = qt3_open(r);
+	while (qt3_read(r3, &rec) != QT_EOF) {
+		const struct shell *g = &rec.shell;
+
+		if (rec.kind == QT_UNIVERSE) {
+			s->x0 = rec.u.x0;
+			s->y0 = rec.u.y0;
+			s->z0 = rec.u.z0;
+			s->size = rec.u.size;
+		}
+		if (rec.kind != QT_SHELL)
+			continue;
+		if (s->nv + g->nv > UINT32_MAX)
+			die(1, "too many vertices: %zu", s->nv + g->nv);
+		s->v = xreallocarray(s->v, s->nv + g->nv, 3 * sizeof(*s->v));
+		s->t = xreallocarray(s->t, s->nt + g->nt, 3 * sizeof(*s->t));
+		for (i = 0; i < g->nv; i++) {
+			s->v[3 * (s->nv + i)] = g->v[i].x;
+			s->v[3 * (s->nv + i) + 1] = g->v[i].y;
+			s->v[3 * (s->nv + i) + 2] = g->v[i].z;
+		}
+		for (i = 0; i < 3 * g->nt; i++)
+			s->t[3 * s->nt + i] = s->nv + g->t[i];
+		s->nv += g->nv;
+		s->nt += g->nt;
+	}
+	qt3_close(r3);
+	qt_close(r);
 }
 
 /*

@@ -29,6 +29,7 @@
 #define PEERS_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -46,8 +47,22 @@ struct poly {
 	size_t		 n;
 };
 
+/*
+ * A solid of a 3D stream (tools/bench/peers/cgal3.cc): its universe cube,
+ * the vertices of all its shells, x y z, and its triangles, three vertex
+ * numbers from 0 each, as the stream orients them (normals outward).
+ */
+struct solid {
+	double		 x0, y0, z0, size;
+	double		*v;
+	size_t		 nv;
+	uint32_t	*t;
+	size_t		 nt;
+};
+
 const char *peer_args(int, char *[], const char *, int, int *);
 void	 peer_read(const char *, struct poly *);
+void	 peer_read3(const char *, struct solid *);
 double	 peer_now(void);
 void	 peer_print(const unsigned long long[3], double);
 
