@@ -184,27 +184,31 @@ meetsbox(const struct tri *t, const double lo[3], const double hi[3],
 
 		for (a = 0; a < 3; a++) {
 			int u = a == 0 ? 1 : 0, v = a == 2 ? 1 : 2;
+			double top[3], bot[3];
+			struct point3 kmax, kmin;
 
-			pos = neg = 0;
 			if (coord(p, u) == coord(q, u) &&
 			    coord(p, v) == coord(q, v))
 				continue;	/* the edge runs along the axis */
-			for (c = 0; c < 4 && !(pos && neg); c++) {
-				double cc[3];
-				struct point3 k;
-				int s1, s2;
-
-				cc[a] = 0;
-				cc[u] = c & 1 ? hi[u] : lo[u];
-				cc[v] = c & 2 ? hi[v] : lo[v];
-				k = pt3(cc[0], cc[1], cc[2]);
-				/* the signs of L.(p - k) and L.(r - k) */
-				s1 = crosssign(p, q, k, p, a, u, v);
-				s2 = crosssign(p, q, k, r, a, u, v);
-				pos |= s1 > 0 || s2 > 0;
-				neg |= s1 < 0 || s2 < 0;
-			}
-			if (!pos || !neg)
+			/*
+			 * L = (p_v - q_v, q_u - p_u) in the plane across a,
+			 * the signs of its parts exact: the box's corners
+			 * where L.k is largest and smallest.  The box and the
+			 * triangle's projections on L part, touching at most,
+			 * when L.(t - k) >= 0 for t = p, r at the largest,
+			 * or <= 0 at the smallest.
+			 */
+			top[a] = bot[a] = 0;
+			top[u] = coord(p, v) > coord(q, v) ? hi[u] : lo[u];
+			bot[u] = coord(p, v) > coord(q, v) ? lo[u] : hi[u];
+			top[v] = coord(q, u) > coord(p, u) ? hi[v] : lo[v];
+			bot[v] = coord(q, u) > coord(p, u) ? lo[v] : hi[v];
+			kmax = pt3(top[0], top[1], top[2]);
+			kmin = pt3(bot[0], bot[1], bot[2]);
+			if ((crosssign(p, q, kmax, p, a, u, v) >= 0 &&
+			    crosssign(p, q, kmax, r, a, u, v) >= 0) ||
+			    (crosssign(p, q, kmin, p, a, u, v) <= 0 &&
+			    crosssign(p, q, kmin, r, a, u, v) <= 0))
 				return 0;
 		}
 	}
