@@ -526,6 +526,7 @@ struct cell3 {
 	uint64_t	 ix, iy, iz;
 	double		 x, y, z, size;
 	char		 class;	/* 'F', 'E', 'P'; 0 for a node */
+	unsigned long long id;	/* a leaf's element number; 0 for none */
 };
 
 int	 orient3d(struct point3, struct point3, struct point3, struct point3);
@@ -553,8 +554,9 @@ int	 pathcell3(const char *, int, uint64_t *, uint64_t *, uint64_t *);
  * read3.c: a 3D stream.  qt_read, opened with QT_SOLIDS, gives QT_SOLID
  * right after a 3D header (qtree 1 3); qt3_open then reads the rest of
  * the stream, every record checked as qt_read checks 2D ones.  qt3_read
- * gives QT_UNIVERSE, QT_LEVEL, QT_SHELL (whole, with its v and f
- * records), QT_NODE, QT_LEAF, QT_OTHER, and QT_EOF after the end record.
+ * gives QT_UNIVERSE, QT_LEVEL, QT_OBJECT, QT_SHELL (whole, with its v
+ * and f records), QT_OP, QT_NODE, QT_LEAF, QT_OTHER, and QT_EOF after the
+ * end record.
  */
 struct qt3rec {
 	enum qtkind	 kind;
@@ -566,6 +568,8 @@ struct qt3rec {
 	int		 level;
 	struct shell	 shell;
 	struct cell3	 c;
+	long		 object;	/* QT_OBJECT: its number */
+	struct qtop	 op;	/* QT_OP */
 };
 
 struct qt3reader *qt3_open(struct qtreader *);
