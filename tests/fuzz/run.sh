@@ -109,7 +109,7 @@ need qtstats tools/qtstats/*.c
 need qtleaves tools/qtleaves.c
 need qtbalance tools/qtbalance.c
 need qtmesh tools/qtmesh/*.c
-need qtcat tools/qtcat.c
+need qtcat tools/qtcat.c tools/qtcatcopy.c
 need qt2svg tools/qt2svg/*.c
 need qtbool tools/qtbool.c
 wait_builds
