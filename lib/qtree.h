@@ -556,7 +556,8 @@ int	 pathcell3(const char *, int, uint64_t *, uint64_t *, uint64_t *);
  * the stream, every record checked as qt_read checks 2D ones.  qt3_read
  * gives QT_UNIVERSE, QT_LEVEL, QT_OBJECT, QT_SHELL (whole, with its v
  * and f records), QT_OP, QT_NODE, QT_LEAF, QT_OTHER, and QT_EOF after the
- * end record.
+ * end record.  Under QT_CONCAT, qt3_next then starts the next stream, a
+ * 3D one, and returns 1, or returns 0 at the end of the input.
  */
 struct qt3rec {
 	enum qtkind	 kind;
@@ -574,6 +575,7 @@ struct qt3rec {
 
 struct qt3reader *qt3_open(struct qtreader *);
 enum qtkind qt3_read(struct qt3reader *, struct qt3rec *);
+int	 qt3_next(struct qt3reader *);
 void	 qt3_close(struct qt3reader *);
 
 /* write3.c: the writer of 3D streams, on write.c's buffer and count. */

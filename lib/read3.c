@@ -397,6 +397,8 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 		taglen = strcspn(line, " ");
 		if (taglen == 3 && strncmp(line, "end", 3) == 0) {
 			endrec(s, line);
+			if (qt_flags(s->r) & QT_CONCAT)
+				return QT_EOF;	/* qt3_next goes on */
 			continue;
 		}
 		if (taglen == 0)
@@ -440,4 +442,31 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 		rec->kind = QT_OTHER;
 	unsplit(s);
 	return rec->kind;
+}
+
+/*
+ * After QT_EOF under QT_CONCAT: the next stream, which must be a 3D one,
+ * its records counted anew; 0 at the end of the input.
+ */
+int
+qt3_next(struct qt3reader *s)
+{
+	char *line;
+	size_t len;
+
+	if ((line = qt_rawline(s->r, &len)) == NULL)
+		return 0;
+	if (strncmp(line, "qtree ", 6) != 0)
+		qt_fail(s->r, "data after the end record");
+	if (strcmp(line + 6, "1 3") != 0)
+		qt_fail(s->r, "a stream of another kind after a 3D one: "
+		    "qtree %s", line + 6);
+	s->count = 0;
+	s->haveuniverse = s->havelevel = s->havecells = s->ended = 0;
+	s->level = -1;
+	s->nshells = s->nobjects = 0;
+	s->haveop = 0;
+	s->pathlen = s->lastleaf = 0;
+	s->path[0] = '\0';
+	return 1;
 }

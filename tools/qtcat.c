@@ -47,6 +47,11 @@ struct heldcell {
 static struct input *in;
 static int nin, unsealed, checkall;
 
+int dim;
+static const char *dimname;	/* the input that said it */
+char lastdigit = '3';
+static struct universe3 u3;	/* a 3D stream's, to write its cells */
+
 char *headtext;
 size_t headlen;
 unsigned long long headrecs;
@@ -184,6 +189,73 @@ samehead(const struct input *p, size_t j, const struct qtrec *rec, long line)
 
 static int readhead(struct input *);
 
+/* Input p's first record says its dimension d: the first input's. */
+static void
+setdim(struct input *p, int d)
+{
+	p->dim = d;
+	if (dim == 0) {
+		dim = d;
+		dimname = p->name;
+	} else if (d != dim)
+		errat(p->name, 1, "a %dD stream, and %s holds a %dD one: qtcat "
+		    "joins trees of one dimension", d, dimname, dim);
+	if (d == 3)
+		lastdigit = '7';
+}
+
+/*
+ * The next record of input p into rec, a 3D stream's (read3.c) given as a
+ * 2D one's: its text and count, a cell's path, level, class and number.
+ */
+static enum qtkind
+readrec(struct input *p, struct qtrec *rec)
+{
+	struct qt3rec *r3 = &p->rec3;
+	enum qtkind kind;
+
+	if (p->s == NULL) {
+		if ((kind = qt_read(p->r, rec)) != QT_SOLID) {
+			if (p->dim == 0 && kind != QT_EOF)
+				setdim(p, 2);
+			return kind;
+		}
+		setdim(p, 3);
+		p->s = qt3_open(p->r);
+	}
+	rec->kind = kind = qt3_read(p->s, r3);
+	rec->line = r3->line;
+	rec->len = r3->len;
+	rec->lineno = r3->lineno;
+	rec->nrec = r3->nrec;
+	if (kind == QT_NODE || kind == QT_LEAF) {
+		memset(&rec->c, 0, sizeof(rec->c));
+		rec->c.path = r3->c.path;
+		rec->c.level = r3->c.level;
+		rec->c.class = r3->c.class;
+		rec->c.id = r3->c.id;
+		rec->c.frac = -1;
+	} else if (kind == QT_UNIVERSE && headname == NULL)
+		u3 = r3->u;
+	return kind;
+}
+
+/* Preorder: a 2D cell's by its grid place, a 3D one's by its path. */
+int
+cellorder(const struct cell *a, const struct cell *b)
+{
+	return dim == 3 ? strcmp(a->path, b->path) : cell_cmp(a, b);
+}
+
+/* Input p's reader closed, at its end or to open it again. */
+static void
+closein(struct input *p)
+{
+	qt3_close(p->s);
+	p->s = NULL;
+	qt_close(p->r);
+}
+
 /*
  * The first cell of the next stream of input p that has one, into p->rec,
  * after the stream that ended; returns 0 at the end of the input.
@@ -191,10 +263,10 @@ static int readhead(struct input *);
 static int
 nextstream(struct input *p)
 {
-	while (qt_next(p->r))
+	while (p->s != NULL ? qt3_next(p->s) : qt_next(p->r))
 		if (readhead(p))
 			return 1;
-	qt_close(p->r);
+	closein(p);
 	p->done = 1;
 	return 0;
 }
@@ -215,18 +287,23 @@ nextcell(struct input *p)
 	prev.level = p->rec.c.level;
 	prev.ix = p->rec.c.ix;
 	prev.iy = p->rec.c.iy;
+	if (p->s != NULL) {	/* the reader's path changes with the cell */
+		memcpy(path, p->rec.c.path, prev.level + 1);
+		prev.path = path;
+	}
 	p->lineno = p->rec.lineno;
 	for (;;) {
-		switch (kind = qt_read(p->r, &p->rec)) {
+		switch (kind = readrec(p, &p->rec)) {
 		case QT_EOF:
 			if (!nextstream(p))
 				return 0;
-			if (cell_cmp(&prev, &p->rec.c) > 0)
+			if (cellorder(&prev, &p->rec.c) > 0)
 				errat(p->name, p->rec.lineno, "cell %s comes "
 				    "before cell %s (line %ld) in preorder: "
 				    "an input's streams must follow each other "
-				    "in preorder", p->rec.c.path, cellpath(path,
-				    prev.level, prev.ix, prev.iy), p->lineno);
+				    "in preorder", p->rec.c.path, dim == 3 ?
+				    prev.path : cellpath(path, prev.level,
+				    prev.ix, prev.iy), p->lineno);
 			return 1;
 		case QT_NODE:
 		case QT_LEAF:
@@ -259,7 +336,7 @@ readhead(struct input *p)
 	long line = 0;
 	int keep = headname == NULL;
 
-	while ((kind = qt_read(p->r, &rec)) != QT_EOF) {
+	while ((kind = readrec(p, &rec)) != QT_EOF) {
 		if (kind == QT_NODE || kind == QT_LEAF)
 			break;
 		if (kind == QT_VERTEX || kind == QT_ELEM)
@@ -273,7 +350,7 @@ readhead(struct input *p)
 				    sizeof(*head));
 			}
 			head[nhead++] = qt_keep(&rec);
-			if (kind == QT_UNIVERSE)
+			if (kind == QT_UNIVERSE && p->s == NULL)
 				qt_setuniverse(&rec.u);
 		} else
 			samehead(p, j, &rec, 0);
@@ -309,7 +386,8 @@ wanted(char *want)
 		want[last.level] = '0';
 		return last.level + 1;
 	}
-	for (j = last.level; j > root.level && last.path[j - 1] == '3'; j--)
+	for (j = last.level; j > root.level && last.path[j - 1] == lastdigit;
+	    j--)
 		;
 	if (j == root.level)
 		return -1;
@@ -335,7 +413,7 @@ follows(const struct cell *c)
 	    c->path[j - 1] != last.path[j - 1] + 1)
 		return -1;
 	for (k = j; k < last.level; k++)
-		if (last.path[k] != '3')
+		if (last.path[k] != lastdigit)
 			return -1;
 	return memcmp(c->path, last.path, j - 1) == 0 ? j - 1 : -1;
 }
@@ -390,7 +468,17 @@ putcell(const struct cell *c, const char *name, long lineno)
 			return;
 		k = 0;
 	}
-	if (c->frac >= 0)
+	if (dim == 3) {
+		struct cell3 c3;
+
+		memset(&c3, 0, sizeof(c3));
+		c3.path = c->path;
+		c3.level = c->level;
+		pathcell3(c->path, c->level, &c3.ix, &c3.iy, &c3.iz);
+		c3.class = c->class;
+		c3.id = c->id;
+		qt3_cell(&u3, &c3);
+	} else if (c->frac >= 0)
 		qt_cellfrac(c, c->id, c->frac);
 	else
 		qt_cell(c, c->id);
@@ -411,12 +499,12 @@ headbytes(void)
 {
 	size_t j;
 
-	headlen = 8;
+	headlen = 10;
 	for (j = 0; j < nhead; j++)
 		headlen += head[j]->len + 1;
 	headtext = xmalloc(headlen);
-	memcpy(headtext, "qtree 1\n", 8);
-	headlen = 8;
+	headlen = dim == 3 ? 10 : 8;
+	memcpy(headtext, dim == 3 ? "qtree 1 3\n" : "qtree 1\n", headlen);
 	headlines = 1;
 	for (j = 0; j < nhead; j++) {
 		memcpy(headtext + headlen, head[j]->line, head[j]->len);
@@ -440,7 +528,9 @@ unblock(struct input *p)
 	free(p->b);
 	p->b = NULL;
 	fp = openin(p->path, &p->name);
-	p->r = qt_open(fp, p->name, QT_NEEDUNIVERSE | QT_ARCS | QT_CONCAT);
+	p->r = qt_open(fp, p->name,
+	    QT_NEEDUNIVERSE | QT_ARCS | QT_CONCAT | QT_SOLIDS);
+	p->dim = 0;
 	if (!readhead(p))
 		nextstream(p);
 }
@@ -514,7 +604,7 @@ endtree(void)
 static int
 before(const struct input *a, const struct input *b)
 {
-	int d = cell_cmp(&a->rec.c, &b->rec.c);
+	int d = cellorder(&a->rec.c, &b->rec.c);
 
 	return d < 0 || (d == 0 && a < b);
 }
@@ -556,7 +646,8 @@ merge(void)
 			q = n > 1 ? h[1] : NULL;
 			if (n > 2 && before(h[2], h[1]))
 				q = h[2];
-			if (q != NULL && cell_cmp(&q->rec.c, &p->b->last) <= 0) {
+			if (q != NULL &&
+			    cellorder(&q->rec.c, &p->b->last) <= 0) {
 				unblock(p);
 				if (p->done)
 					h[0] = h[--n];
@@ -689,14 +780,17 @@ main(int argc, char *argv[])
 			continue;
 		}
 		fp = openin(argv[i], &in[i].name);
-		in[i].r = qt_open(fp, in[i].name,
-		    QT_NEEDUNIVERSE | QT_ARCS | (unsealed ? QT_UNSEALED : QT_CONCAT));
+		in[i].r = qt_open(fp, in[i].name, QT_NEEDUNIVERSE | QT_ARCS |
+		    QT_SOLIDS | (unsealed ? QT_UNSEALED : QT_CONCAT));
 		if (!readhead(&in[i]))
 			nextstream(&in[i]);
 	}
 	if (headname == NULL)
 		errat(in[0].name, 0, "empty input: not a qtree stream");
-	qt_header();
+	if (dim == 3)
+		qt3_header();
+	else
+		qt_header();
 	for (j = 0; j < nhead; j++)
 		qt_echo(head[j]);
 	if (unsealed)

@@ -18,6 +18,9 @@ struct input {
 	const char	*path;	/* the operand */
 	struct qtreader	*r;
 	struct qtrec	 rec;	/* the current cell */
+	int		 dim;	/* 2 or 3, 0 before a record */
+	struct qt3reader *s;	/* a 3D stream's reader, on r */
+	struct qt3rec	 rec3;	/* and its record, given in rec */
 	int		 done;
 	long		 lineno;	/* of the cell before it */
 	struct block	*b;	/* not NULL: copied whole */
@@ -28,6 +31,10 @@ extern char *headtext;
 extern size_t headlen;
 extern unsigned long long headrecs;
 extern long headlines;
+
+/* The inputs' dimension, 2 or 3 (0 before a record); a path's last digit. */
+extern int dim;
+extern char lastdigit;
 
 #define CHUNK	(1 << 20)	/* a read of a shard copied whole */
 extern char *chunk;

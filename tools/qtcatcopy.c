@@ -57,19 +57,20 @@ decimal(const char *s, const char *end)
 /*
  * The cell of line s (n bytes, its newline excluded), for the merge's
  * order and checks: "node PATH LEVEL IX IY X Y SIZE" or "leaf ... CLASS",
- * the path, level, column and row agreeing; its corner and size, like
- * every cell between, are copied as they are.  Returns -1 for anything
- * else, which the reader then reads.
+ * in 3D "node PATH LEVEL IX IY IZ X Y Z SIZE" or "leaf ... CLASS", the
+ * path, level, column, row (and layer) agreeing; its corner and size,
+ * like every cell between, are copied as they are.  Returns -1 for
+ * anything else, which the reader then reads.
  */
 static int
 blockcell(const char *s, size_t n, struct cell *c, char *path)
 {
-	const char *f[10], *e = s + n, *p = s;
-	long long level, ix, iy;
-	uint64_t px, py;
-	int nf = 0;
+	const char *f[12], *e = s + n, *p = s;
+	long long level, ix, iy, iz = 0;
+	uint64_t px, py, pz = 0;
+	int nf = 0, nn = dim == 3 ? 10 : 8;	/* a node's fields */
 
-	while (p < e && nf < 10) {
+	while (p < e && nf < nn + 2) {
 		f[nf++] = p;
 		while (p < e && *p != ' ')
 			p++;
@@ -78,22 +79,24 @@ blockcell(const char *s, size_t n, struct cell *c, char *path)
 	}
 	if (p != e || s[n - 1] == ' ')
 		return -1;
-	if (nf == 8 && memcmp(s, "node ", 5) == 0)
+	if (nf == nn && memcmp(s, "node ", 5) == 0)
 		c->class = 0;
-	else if (nf == 9 && memcmp(s, "leaf ", 5) == 0 && e - f[8] == 1 &&
-	    strchr("FEP", *f[8]) != NULL)
-		c->class = *f[8];
+	else if (nf == nn + 1 && memcmp(s, "leaf ", 5) == 0 &&
+	    e - f[nn] == 1 && strchr("FEP", *f[nn]) != NULL)
+		c->class = *f[nn];
 	else
 		return -1;
 	if ((level = decimal(f[2], f[3] - 1)) < 0 || level > QT_MAXLEVEL ||
 	    (ix = decimal(f[3], f[4] - 1)) < 0 ||
 	    (iy = decimal(f[4], f[5] - 1)) < 0 ||
+	    (dim == 3 && (iz = decimal(f[5], f[6] - 1)) < 0) ||
 	    f[2] - 1 - f[1] != (level > 0 ? level : 1))
 		return -1;
 	memcpy(path, f[1], f[2] - 1 - f[1]);
 	path[f[2] - 1 - f[1]] = '\0';
-	if (cell_frompath(path, (int)level, &px, &py) < 0 ||
-	    px != (uint64_t)ix || py != (uint64_t)iy)
+	if ((dim == 3 ? pathcell3(path, (int)level, &px, &py, &pz) :
+	    cell_frompath(path, (int)level, &px, &py)) < 0 ||
+	    px != (uint64_t)ix || py != (uint64_t)iy || pz != (uint64_t)iz)
 		return -1;
 	if (level == 0)
 		path[0] = '\0';
@@ -183,7 +186,7 @@ probe(struct input *p, const char *path)
 		    memcmp(b.lastpath, b.firstpath, p->rec.c.level) != 0)
 			goto no;
 		for (k = p->rec.c.level; k < (size_t)b.last.level; k++)
-			if (b.lastpath[k] != '3')
+			if (b.lastpath[k] != lastdigit)
 				goto no;
 	}
 	p->b = xmalloc(sizeof(*p->b));
