@@ -117,6 +117,8 @@ F() {
 	[ "$stderr" = "qtcat: $d/top.q3:1: a 3D stream, and flat.qt holds a 2D one: qtcat joins trees of one dimension" ]
 	run -1 --separate-stderr bash -c "cat flat.qt $d/top.q3 | qtcat"
 	[ "$stderr" = "qtcat: stdin:$(($(wc -l < flat.qt) + 1)): a 3D stream (qtree 1 3) after a 2D one" ]
+	run -1 --separate-stderr bash -c "cat $(F octa-whole.q3) flat.qt | qtcat"
+	[ "$stderr" = "qtcat: stdin:$(($(wc -l < "$(F octa-whole.q3)") + 1)): a stream of another kind after a 3D one: qtree 1" ]
 	run -1 --separate-stderr qtcat -u $d/top.q3
 	[ "$stderr" = "qtcat: $d/top.q3:1: a 3D stream (qtree 1 3) read unsealed: -u takes 2D streams only" ]
 }

@@ -89,3 +89,15 @@ oracleleaves() {
 	head -n 1 got | grep -qxF '{"type":"FeatureCollection","features":['
 	tail -n 1 got | grep -qxF ']}'
 }
+
+@test "qtleaves(1): the octahedron's example runs as printed and prints the oracle's count and volume" {
+	cmd=$(sed -n '/^\$ polyread -u -2,-2,-2,4 tests\/solids\/octa.off/,/^\.Ed/p' \
+	    "$TOP/man/qtleaves.1" | sed '$d' | sed '$d' | sed 's/^\$ //')
+	printed=$(sed -n '/^\$ polyread -u -2,-2,-2,4 tests\/solids\/octa.off/,/^\.Ed/p' \
+	    "$TOP/man/qtleaves.1" | sed '$d' | tail -n 1)
+	polyread -u -2,-2,-2,4 "$SOLIDS/octa.off" | python3 "$ORACLE" 4 |
+	    awk '$1 == "leaf" && $7 == "F" { n++; v += (4 / 2 ^ $3) ^ 3 }
+	    END { print n, v }' > want
+	[ "$printed" = "$(cat want)" ]
+	(cd "$TOP" && bash -c "$cmd") | diff -u want -
+}
