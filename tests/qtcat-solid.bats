@@ -122,3 +122,19 @@ F() {
 	run -1 --separate-stderr qtcat -u $d/top.q3
 	[ "$stderr" = "qtcat: $d/top.q3:1: a 3D stream (qtree 1 3) read unsealed: -u takes 2D streams only" ]
 }
+
+@test "an input's 3D streams out of preorder are refused, naming the cell before" {
+	d=$(F octa-2)
+	a=$(sed -n 1p $d/roots) b=$(sed -n 2p $d/roots)
+	cat $d/s-$b.q3 $d/s-$a.q3 > swapped.q3
+	# the last cell of b's shard and its line, the first of a's
+	lastb=$(awk '$1 == "leaf" { p = $2 } END { print p }' $d/s-$b.q3)
+	lineb=$(awk '$1 == "leaf" { n = NR } END { print n }' $d/s-$b.q3)
+	linea=$(($(wc -l < $d/s-$b.q3) + $(grep -n '^node' $d/s-$a.q3 | head -n 1 | cut -d: -f1)))
+	run -1 --separate-stderr qtcat swapped.q3
+	[ "$stderr" = "qtcat: swapped.q3:$linea: cell $a comes before cell $lastb (line $lineb) in preorder: an input's streams must follow each other in preorder" ]
+	# and a root shard: the whole tree, then the first shard again
+	cat "$(F octa-whole.q3)" $d/s-$a.q3 > again.q3
+	run -1 --separate-stderr qtcat again.q3
+	[[ "$stderr" == "qtcat: again.q3:"*": cell $a comes before cell "*" in preorder"* ]]
+}

@@ -19,6 +19,10 @@
  * is one whole subtree, its cells go out as its bytes, in large reads, at
  * the place of its first cell, unless another input has a cell among
  * them; the lines copied must be the cells its end record counts.
+ *
+ * 3D streams (octrees) join alike, read by read3.c and given to the merge
+ * as 2D records: their cells in the order of their paths, eight children
+ * a node.  All inputs are of one dimension.
  */
 #include <sys/stat.h>
 
@@ -241,7 +245,7 @@ readrec(struct input *p, struct qtrec *rec)
 }
 
 /* Preorder: a 2D cell's by its grid place, a 3D one's by its path. */
-int
+static int
 cellorder(const struct cell *a, const struct cell *b)
 {
 	return dim == 3 ? strcmp(a->path, b->path) : cell_cmp(a, b);
@@ -288,7 +292,7 @@ nextcell(struct input *p)
 	prev.ix = p->rec.c.ix;
 	prev.iy = p->rec.c.iy;
 	if (p->s != NULL) {	/* the reader's path changes with the cell */
-		memcpy(path, p->rec.c.path, prev.level + 1);
+		memcpy(path, p->rec.c.path, strlen(p->rec.c.path) + 1);
 		prev.path = path;
 	}
 	p->lineno = p->rec.lineno;
