@@ -30,6 +30,7 @@ struct qt3reader {
 	int		 opterm[NFIELD3];
 	char		 path[QT_MAXLEVEL + 1];	/* the last cell's, "" root */
 	int		 pathlen, lastleaf;
+	int		 deepest;	/* the deepest cell's level, -1 before one */
 	struct shell	 shell;
 	size_t		 vcap, tcap;
 	char		*text;		/* a shell's records, as read */
@@ -43,6 +44,7 @@ qt3_open(struct qtreader *r)
 
 	s->r = r;
 	s->level = -1;
+	s->deepest = -1;
 	return s;
 }
 
@@ -313,6 +315,8 @@ cellrec(struct qt3reader *s, struct qt3rec *rec)
 			qt_fail(s->r, "cell %s lies inside leaf %s", path,
 			    s->pathlen > 0 ? s->path : ".");
 	}
+	if (level > s->deepest)
+		s->deepest = level;
 	memcpy(s->path, p, level + 1);
 	s->pathlen = level;
 	s->lastleaf = rec->kind == QT_LEAF;
@@ -380,6 +384,19 @@ endrec(struct qt3reader *s, const char *line)
 	s->ended = 1;
 }
 
+/* -v: records and deepest level, as read.c reports a 2D stream's. */
+static void
+report3(const struct qt3reader *s, int force)
+{
+	if (!(qt_flags(s->r) & QT_VERBOSE))
+		return;
+	if (s->deepest >= 0)
+		progress(force, "%llu records read, deepest level %d", s->count,
+		    s->deepest);
+	else
+		progress(force, "%llu records read", s->count);
+}
+
 enum qtkind
 qt3_read(struct qt3reader *s, struct qt3rec *rec)
 {
@@ -390,6 +407,7 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 		if ((line = qt_rawline(s->r, &len)) == NULL) {
 			if (!s->ended)
 				qt_fail(s->r, "truncated stream: no end record");
+			report3(s, 1);
 			return QT_EOF;
 		}
 		if (s->ended)
@@ -441,6 +459,8 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 	} else
 		rec->kind = QT_OTHER;
 	unsplit(s);
+	if ((s->count & 0xfffff) == 0)
+		report3(s, 0);
 	return rec->kind;
 }
 
@@ -454,8 +474,10 @@ qt3_next(struct qt3reader *s)
 	char *line;
 	size_t len;
 
-	if ((line = qt_rawline(s->r, &len)) == NULL)
+	if ((line = qt_rawline(s->r, &len)) == NULL) {
+		report3(s, 1);
 		return 0;
+	}
 	if (strncmp(line, "qtree ", 6) != 0)
 		qt_fail(s->r, "data after the end record");
 	if (strcmp(line + 6, "1 3") != 0)

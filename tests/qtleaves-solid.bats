@@ -101,3 +101,11 @@ oracleleaves() {
 	[ "$printed" = "$(cat want)" ]
 	(cd "$TOP" && bash -c "$cmd") | diff -u want -
 }
+
+@test "-v reports the 3D stream's records, as its end record counts them, and its deepest level" {
+	polyread -u -1.5,-1.25,-1,3 "$SOLIDS/octa.off" | qtsplit -l 4 > tree
+	run -0 --separate-stderr qtleaves -v tree
+	n=$(awk '$1 == "end" { print $2 }' tree)
+	d=$(awk '$1 == "node" || $1 == "leaf" { if ($3 > d) d = $3 } END { print d }' tree)
+	[[ "$stderr" == "qtleaves: $n records read, deepest level $d, "*" s" ]]
+}
