@@ -192,6 +192,10 @@ samehead(const struct input *p, size_t j, const struct qtrec *rec, long line)
 }
 
 static int readhead(struct input *);
+static int pathorder(const struct cell *, const struct cell *);
+
+/* Preorder: a 2D cell's by its grid place, a 3D one's by its path. */
+static int (*cellorder)(const struct cell *, const struct cell *) = cell_cmp;
 
 /* Input p's first record says its dimension d: the first input's. */
 static void
@@ -204,8 +208,10 @@ setdim(struct input *p, int d)
 	} else if (d != dim)
 		errat(p->name, 1, "a %dD stream, and %s holds a %dD one: qtcat "
 		    "joins trees of one dimension", d, dimname, dim);
-	if (d == 3)
+	if (d == 3) {
 		lastdigit = '7';
+		cellorder = pathorder;
+	}
 }
 
 /*
@@ -244,11 +250,18 @@ readrec(struct input *p, struct qtrec *rec)
 	return kind;
 }
 
-/* Preorder: a 2D cell's by its grid place, a 3D one's by its path. */
-static int
-cellorder(const struct cell *a, const struct cell *b)
+/* The next record: a 2D stream's straight from its reader once known. */
+static inline enum qtkind
+nextrec(struct input *p, struct qtrec *rec)
 {
-	return dim == 3 ? strcmp(a->path, b->path) : cell_cmp(a, b);
+	return p->dim == 2 ? qt_read(p->r, rec) : readrec(p, rec);
+}
+
+/* Preorder of 3D cells: their paths', "." first. */
+static int
+pathorder(const struct cell *a, const struct cell *b)
+{
+	return strcmp(a->path, b->path);
 }
 
 /* Input p's reader closed, at its end or to open it again. */
@@ -297,7 +310,7 @@ nextcell(struct input *p)
 	}
 	p->lineno = p->rec.lineno;
 	for (;;) {
-		switch (kind = readrec(p, &p->rec)) {
+		switch (kind = nextrec(p, &p->rec)) {
 		case QT_EOF:
 			if (!nextstream(p))
 				return 0;
@@ -340,7 +353,7 @@ readhead(struct input *p)
 	long line = 0;
 	int keep = headname == NULL;
 
-	while ((kind = readrec(p, &rec)) != QT_EOF) {
+	while ((kind = nextrec(p, &rec)) != QT_EOF) {
 		if (kind == QT_NODE || kind == QT_LEAF)
 			break;
 		if (kind == QT_VERTEX || kind == QT_ELEM)
