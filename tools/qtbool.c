@@ -49,12 +49,10 @@ static const char table[QT_XOR + 1][3][4] = {
 struct input {
 	const char	*name;
 	struct qtreader	*r;
-	struct qtrec	 rec;	/* its next record, a 2D stream's */
+	struct qtrec	 rec;	/* its next cell, QT_EOF after the last */
 	enum qtkind	 kind;
-	struct cell3	 c;	/* its next cell, QT_EOF after the last */
-	long		 clineno;	/* that cell's line */
 	long		 lineno;	/* of the cell taken last */
-	/* a 3D stream: its reader, its next record, its universe */
+	/* a 3D stream: its reader, its next cell, its universe */
 	struct qt3reader *s;
 	struct qt3rec	 rec3;
 	struct universe3 u3;
@@ -118,30 +116,26 @@ pathname(int level)
  * among the cells are written as read.
  */
 static void
+advance3(struct input *p)
+{
+	while ((p->kind = qt3_read(p->s, &p->rec3)) != QT_EOF &&
+	    p->kind != QT_NODE && p->kind != QT_LEAF)
+		if (!quiet)	/* the reader refuses head records */
+			qt3_echo(&p->rec3);
+}
+
+static void
 advance(struct input *p)
 {
 	if (p->s != NULL) {
-		while ((p->kind = qt3_read(p->s, &p->rec3)) != QT_EOF &&
-		    p->kind != QT_NODE && p->kind != QT_LEAF)
-			if (!quiet)	/* the reader refuses head records */
-				qt3_echo(&p->rec3);
-		p->c = p->rec3.c;
-		p->clineno = p->rec3.lineno;
+		advance3(p);
 		return;
 	}
 	for (;;) {
 		switch (p->kind = qt_read(p->r, &p->rec)) {
 		case QT_EOF:
-			return;
 		case QT_NODE:
 		case QT_LEAF:
-			p->c.path = p->rec.c.path;
-			p->c.level = p->rec.c.level;
-			p->c.ix = p->rec.c.ix;
-			p->c.iy = p->rec.c.iy;
-			p->c.iz = 0;
-			p->c.class = p->rec.c.class;
-			p->clineno = p->rec.lineno;
 			return;
 		case QT_VERTEX:
 		case QT_ELEM:
@@ -164,18 +158,29 @@ advance(struct input *p)
 static char
 take(struct input *p, int level, uint64_t ix, uint64_t iy, uint64_t iz)
 {
-	const struct cell3 *c = &p->c;
+	const struct cell *c = &p->rec.c;
+	const struct cell3 *c3 = &p->rec3.c;
 	char class;
 
 	if (p->kind == QT_EOF)
 		qt_fail(p->r, "not a whole tree: the cells end before cell %s",
 		    pathname(level));
-	if (c->level != level || c->ix != ix || c->iy != iy || c->iz != iz)
-		errat(p->name, p->clineno, "not a whole tree: cell %s "
-		    "where cell %s comes in preorder", c->path,
-		    pathname(level));
-	class = c->class;
-	p->lineno = p->clineno;
+	if (p->s != NULL) {
+		if (c3->level != level || c3->ix != ix || c3->iy != iy ||
+		    c3->iz != iz)
+			errat(p->name, p->rec3.lineno, "not a whole tree: cell "
+			    "%s where cell %s comes in preorder", c3->path,
+			    pathname(level));
+		class = c3->class;
+		p->lineno = p->rec3.lineno;
+	} else {
+		if (c->level != level || c->ix != ix || c->iy != iy)
+			errat(p->name, p->rec.lineno, "not a whole tree: cell "
+			    "%s where cell %s comes in preorder", c->path,
+			    pathname(level));
+		class = c->class;
+		p->lineno = p->rec.lineno;
+	}
 	advance(p);
 	return class;
 }
@@ -200,24 +205,32 @@ skip(struct input *p, int level, uint64_t ix, uint64_t iy, uint64_t iz)
 }
 
 static void
+writecell3(const char *cellpath, int level, uint64_t ix, uint64_t iy,
+    uint64_t iz, char class)
+{
+	struct cell3 c3;
+	char buf[QT_MAXLEVEL + 1];
+
+	memcpy(buf, cellpath, level);	/* qt3_cell takes it as a string */
+	buf[level] = '\0';
+	memset(&c3, 0, sizeof(c3));
+	c3.path = level > 0 ? buf : ".";
+	c3.level = level;
+	c3.ix = ix;
+	c3.iy = iy;
+	c3.iz = iz;
+	c3.class = class;
+	qt3_cell(&in[0].u3, &c3);
+}
+
+static inline void
 writecell(const char *cellpath, int level, uint64_t ix, uint64_t iy,
     uint64_t iz, char class)
 {
 	struct cell c;
-	struct cell3 c3;
-	char buf[QT_MAXLEVEL + 1];
 
-	if (nchild == 8) {	/* qt3_cell takes the path as a string */
-		memcpy(buf, cellpath, level);
-		buf[level] = '\0';
-		memset(&c3, 0, sizeof(c3));
-		c3.path = level > 0 ? buf : ".";
-		c3.level = level;
-		c3.ix = ix;
-		c3.iy = iy;
-		c3.iz = iz;
-		c3.class = class;
-		qt3_cell(&in[0].u3, &c3);
+	if (nchild == 8) {
+		writecell3(cellpath, level, ix, iy, iz, class);
 		return;
 	}
 	memset(&c, 0, sizeof(c));
@@ -374,8 +387,6 @@ readhead3(struct input *p)
 			break;
 		case QT_NODE:
 		case QT_LEAF:
-			p->c = r3->c;
-			p->clineno = r3->lineno;
 			return;
 		default:
 			break;
@@ -426,13 +437,6 @@ readhead(struct input *p)
 			break;
 		case QT_NODE:
 		case QT_LEAF:
-			p->c.path = p->rec.c.path;
-			p->c.level = p->rec.c.level;
-			p->c.ix = p->rec.c.ix;
-			p->c.iy = p->rec.c.iy;
-			p->c.iz = 0;
-			p->c.class = p->rec.c.class;
-			p->clineno = p->rec.lineno;
 			return;
 		case QT_VERTEX:
 		case QT_ELEM:
