@@ -69,8 +69,9 @@ QT2SVGOBJ = tools/qt2svg/main.o tools/qt2svg/out.o tools/qt2svg/window.o \
 $(QT2SVGOBJ): $(QTREEH) tools/qt2svg/qt2svg.h
 qt2svg: $(QT2SVGOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QT2SVGOBJ) lib/libqtree.a $(LDLIBS)
-qtcat: tools/qtcat.o
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtcat.o lib/libqtree.a $(LDLIBS)
+qtcat: tools/qtcat.o tools/qtcatcopy.o
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ tools/qtcat.o tools/qtcatcopy.o \
+	    lib/libqtree.a $(LDLIBS)
 qtmesh: $(QTMESHOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(QTMESHOBJ) lib/libqtree.a $(LDLIBS)
 qtbalance: tools/qtbalance.o
@@ -80,8 +81,9 @@ qtbool: tools/qtbool.o
 $(POLYREADOBJ): $(QTREEH) tools/polyread/polyread.h
 $(QTMESHOBJ): $(QTREEH) tools/qtmesh/qtmesh.h
 tools/qtsplit.o tools/qtsplit3.o: tools/qtsplit.h
+tools/qtcat.o tools/qtcatcopy.o: tools/qtcat.h
 tools/qtsplit.o tools/qtsplit3.o tools/qtleaves.o \
-tools/qtcat.o tools/qtbalance.o \
+tools/qtcat.o tools/qtcatcopy.o tools/qtbalance.o \
 tools/qtbool.o: $(QTREEH)
 
 # Test programs: fmtcheck checks fmtreal against printf and strtod,

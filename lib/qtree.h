@@ -527,6 +527,7 @@ struct cell3 {
 	uint64_t	 ix, iy, iz;
 	double		 x, y, z, size;
 	char		 class;	/* 'F', 'E', 'P'; 0 for a node */
+	unsigned long long id;	/* a leaf's element number; 0 for none */
 };
 
 int	 orient3d(struct point3, struct point3, struct point3, struct point3);
@@ -554,8 +555,10 @@ int	 pathcell3(const char *, int, uint64_t *, uint64_t *, uint64_t *);
  * read3.c: a 3D stream.  qt_read, opened with QT_SOLIDS, gives QT_SOLID
  * right after a 3D header (qtree 1 3); qt3_open then reads the rest of
  * the stream, every record checked as qt_read checks 2D ones.  qt3_read
- * gives QT_UNIVERSE, QT_LEVEL, QT_SHELL (whole, with its v and f
- * records), QT_NODE, QT_LEAF, QT_OTHER, and QT_EOF after the end record.
+ * gives QT_UNIVERSE, QT_LEVEL, QT_OBJECT, QT_SHELL (whole, with its v
+ * and f records), QT_OP, QT_NODE, QT_LEAF, QT_OTHER, and QT_EOF after the
+ * end record.  Under QT_CONCAT, qt3_next then starts the next stream, a
+ * 3D one, and returns 1, or returns 0 at the end of the input.
  */
 struct qt3rec {
 	enum qtkind	 kind;
@@ -567,10 +570,13 @@ struct qt3rec {
 	int		 level;
 	struct shell	 shell;
 	struct cell3	 c;
+	long		 object;	/* QT_OBJECT: its number */
+	struct qtop	 op;	/* QT_OP */
 };
 
 struct qt3reader *qt3_open(struct qtreader *);
 enum qtkind qt3_read(struct qt3reader *, struct qt3rec *);
+int	 qt3_next(struct qt3reader *);
 void	 qt3_close(struct qt3reader *);
 
 /* write3.c: the writer of 3D streams, on write.c's buffer and count. */

@@ -617,7 +617,11 @@ header(struct qtreader *r, const char *line)
 			qt_fail(r, "a 3D stream (qtree 1 3): %s reads 2D "
 			    "streams only", progname);
 		r->solid = 1;
-	} else if (strcmp(line + 6, "1") != 0)
+	} else if (strcmp(line + 6, "1 3") == 0)
+		qt_fail(r, (r->flags & QT_UNSEALED) ? "a 3D stream (qtree 1 3) "
+		    "read unsealed: -u takes 2D streams only" : "a 3D stream "
+		    "(qtree 1 3) after a 2D one");
+	else if (strcmp(line + 6, "1") != 0)
 		qt_fail(r, "unsupported qtree version: %s", line + 6);
 	r->state = IN_BODY;
 }
@@ -912,6 +916,12 @@ long
 qt_lineno(const struct qtreader *r)
 {
 	return r->lineno;
+}
+
+int
+qt_flags(const struct qtreader *r)
+{
+	return r->flags;
 }
 
 double

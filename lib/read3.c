@@ -4,6 +4,7 @@
  * universe, shells of v X Y Z and f A B C records, and cells of eight
  * children.  Every record is checked here; what qt3_read gives is valid.
  */
+#include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,7 +14,7 @@
 #include "num.h"
 #include "solidio.h"
 
-#define NFIELD3	16
+#define NFIELD3	64	/* an op record's 63 terms, as in 2D */
 
 struct qt3reader {
 	struct qtreader	*r;
@@ -23,9 +24,13 @@ struct qt3reader {
 	int		 haveuniverse, havelevel, havecells, ended;
 	struct universe3 u;
 	int		 ulevels, level;
-	long		 nshells;
+	long		 nshells;	/* of the current object */
+	long		 nobjects;
+	int		 haveop;
+	int		 opterm[NFIELD3];
 	char		 path[QT_MAXLEVEL + 1];	/* the last cell's, "" root */
 	int		 pathlen, lastleaf;
+	int		 deepest;	/* the deepest cell's level, -1 before one */
 	struct shell	 shell;
 	size_t		 vcap, tcap;
 	char		*text;		/* a shell's records, as read */
@@ -39,6 +44,7 @@ qt3_open(struct qtreader *r)
 
 	s->r = r;
 	s->level = -1;
+	s->deepest = -1;
 	return s;
 }
 
@@ -188,6 +194,8 @@ shellrec(struct qt3reader *s, struct qt3rec *rec, char *line, size_t len)
 		qt_fail(s->r, "shell record before the universe record");
 	if (s->havecells)
 		qt_fail(s->r, "shell record after cells");
+	if (s->haveop)
+		qt_fail(s->r, "shell record after the op record");
 	g->id = qt_intfield(s->r, s->field[1], "shell id", 1,
 	    (long long)1 << 40);
 	if (g->id != s->nshells + 1)
@@ -233,8 +241,48 @@ shellrec(struct qt3reader *s, struct qt3rec *rec, char *line, size_t len)
 	s->nfield = 0;
 }
 
+/* object K of a combined stream (qtbool): its shells follow, from 1. */
+static void
+objectrec(struct qt3reader *s, struct qt3rec *rec)
+{
+	nfields(s, 2, 2);
+	if (s->havecells)
+		qt_fail(s->r, "object record after cells");
+	if (s->haveop)
+		qt_fail(s->r, "object record after the op record");
+	if (s->nobjects == 0 && s->nshells > 0)
+		qt_fail(s->r, "object record after shells of no object");
+	rec->object = qt_intfield(s->r, s->field[1], "object", 1,
+	    QT_MAXOBJECTS);
+	if (rec->object != s->nobjects + 1)
+		qt_fail(s->r, "object %ld follows object %ld", rec->object,
+		    s->nobjects);
+	s->nobjects++;
+	s->nshells = 0;
+}
+
+/* op EXPR: how the objects combine, once, after them all. */
+static void
+oprec(struct qt3reader *s, struct qt3rec *rec)
+{
+	const char *msg;
+
+	if (s->nfield < 2)
+		qt_fail(s->r, "op record without an expression");
+	if (s->havecells)
+		qt_fail(s->r, "op record after cells");
+	if (s->haveop)
+		qt_fail(s->r, "second op record");
+	if ((msg = op_terms(s->field + 1, s->nfield - 1, s->nobjects,
+	    s->opterm)) != NULL)
+		qt_fail(s->r, "%s", msg);
+	rec->op.n = s->nfield - 1;
+	rec->op.term = s->opterm;
+	s->haveop = 1;
+}
+
 /*
- * node PATH LEVEL IX IY IZ X Y Z SIZE and leaf ... CLASS, in preorder:
+ * node PATH LEVEL IX IY IZ X Y Z SIZE and leaf ... CLASS [ID], in preorder:
  * paths in the C locale's order, a cell never inside the leaf before it.
  */
 static void
@@ -248,7 +296,7 @@ cellrec(struct qt3reader *s, struct qt3rec *rec)
 	int level;
 
 	nfields(s, rec->kind == QT_LEAF ? 11 : 10, rec->kind == QT_LEAF ?
-	    11 : 10);
+	    12 : 10);
 	if (!s->haveuniverse)
 		qt_fail(s->r, "%s record before the universe record",
 		    s->field[0]);
@@ -267,6 +315,8 @@ cellrec(struct qt3reader *s, struct qt3rec *rec)
 			qt_fail(s->r, "cell %s lies inside leaf %s", path,
 			    s->pathlen > 0 ? s->path : ".");
 	}
+	if (level > s->deepest)
+		s->deepest = level;
 	memcpy(s->path, p, level + 1);
 	s->pathlen = level;
 	s->lastleaf = rec->kind == QT_LEAF;
@@ -302,12 +352,16 @@ cellrec(struct qt3reader *s, struct qt3rec *rec)
 	c->level = level;
 	c->path = level > 0 ? s->path : ".";
 	c->class = 0;
+	c->id = 0;
 	if (rec->kind == QT_LEAF) {
 		const char *k = s->field[10];
 
 		if ((k[0] != 'F' && k[0] != 'E' && k[0] != 'P') || k[1] != '\0')
 			qt_fail(s->r, "leaf class is not F, E or P: %s", k);
 		c->class = k[0];
+		if (s->nfield == 12)
+			c->id = qt_intfield(s->r, s->field[11],
+			    "element id", 1, LLONG_MAX);
 	}
 }
 
@@ -325,7 +379,22 @@ endrec(struct qt3reader *s, const char *line)
 		    "has %llu", count, s->count);
 	if (!s->haveuniverse)
 		qt_fail(s->r, "no universe record");
+	if (s->nobjects > 0 && !s->haveop)
+		qt_fail(s->r, "objects without an op record");
 	s->ended = 1;
+}
+
+/* -v: records and deepest level, as read.c reports a 2D stream's. */
+static void
+report3(const struct qt3reader *s, int force)
+{
+	if (!(qt_flags(s->r) & QT_VERBOSE))
+		return;
+	if (s->deepest >= 0)
+		progress(force, "%llu records read, deepest level %d", s->count,
+		    s->deepest);
+	else
+		progress(force, "%llu records read", s->count);
 }
 
 enum qtkind
@@ -338,6 +407,7 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 		if ((line = qt_rawline(s->r, &len)) == NULL) {
 			if (!s->ended)
 				qt_fail(s->r, "truncated stream: no end record");
+			report3(s, 1);
 			return QT_EOF;
 		}
 		if (s->ended)
@@ -345,6 +415,8 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 		taglen = strcspn(line, " ");
 		if (taglen == 3 && strncmp(line, "end", 3) == 0) {
 			endrec(s, line);
+			if (qt_flags(s->r) & QT_CONCAT)
+				return QT_EOF;	/* qt3_next goes on */
 			continue;
 		}
 		if (taglen == 0)
@@ -365,6 +437,12 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 	} else if (strcmp(s->field[0], "level") == 0) {
 		rec->kind = QT_LEVEL;
 		levelrec(s, rec);
+	} else if (strcmp(s->field[0], "object") == 0) {
+		rec->kind = QT_OBJECT;
+		objectrec(s, rec);
+	} else if (strcmp(s->field[0], "op") == 0) {
+		rec->kind = QT_OP;
+		oprec(s, rec);
 	} else if (strcmp(s->field[0], "shell") == 0) {
 		rec->kind = QT_SHELL;
 		shellrec(s, rec, line, len);
@@ -381,5 +459,36 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 	} else
 		rec->kind = QT_OTHER;
 	unsplit(s);
+	if ((s->count & 0xfffff) == 0)
+		report3(s, 0);
 	return rec->kind;
+}
+
+/*
+ * After QT_EOF under QT_CONCAT: the next stream, which must be a 3D one,
+ * its records counted anew; 0 at the end of the input.
+ */
+int
+qt3_next(struct qt3reader *s)
+{
+	char *line;
+	size_t len;
+
+	if ((line = qt_rawline(s->r, &len)) == NULL) {
+		report3(s, 1);
+		return 0;
+	}
+	if (strncmp(line, "qtree ", 6) != 0)
+		qt_fail(s->r, "data after the end record");
+	if (strcmp(line + 6, "1 3") != 0)
+		qt_fail(s->r, "a stream of another kind after a 3D one: "
+		    "qtree %s", line + 6);
+	s->count = 0;
+	s->haveuniverse = s->havelevel = s->havecells = s->ended = 0;
+	s->level = -1;
+	s->nshells = s->nobjects = 0;
+	s->haveop = 0;
+	s->pathlen = s->lastleaf = 0;
+	s->path[0] = '\0';
+	return 1;
 }

@@ -7,6 +7,7 @@
 /* read.c: lines and fields read and checked as 2D ones. */
 char	*qt_rawline(struct qtreader *, size_t *);
 long	 qt_lineno(const struct qtreader *);
+int	 qt_flags(const struct qtreader *);
 double	 qt_realfield(struct qtreader *, const char *, const char *);
 long long qt_intfield(struct qtreader *, const char *, const char *,
 	    long long, long long);

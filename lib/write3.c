@@ -144,6 +144,10 @@ qt3_cell(const struct universe3 *u, const struct cell3 *c)
 		*p++ = ' ';
 		*p++ = c->class;
 	}
+	if (c->class && c->id > 0) {
+		*p++ = ' ';
+		p = fmtint(p, (long long)c->id);
+	}
 	*p++ = '\n';
 	qt_putrecords(buf, p - buf, 1);
 }

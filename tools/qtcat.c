@@ -19,6 +19,10 @@
  * is one whole subtree, its cells go out as its bytes, in large reads, at
  * the place of its first cell, unless another input has a cell among
  * them; the lines copied must be the cells its end record counts.
+ *
+ * 3D streams (octrees) join alike, read by read3.c and given to the merge
+ * as 2D records: their cells in the order of their paths, eight children
+ * a node.  All inputs are of one dimension.
  */
 #include <sys/stat.h>
 
@@ -31,26 +35,7 @@
 #include <unistd.h>
 
 #include "qtree.h"
-
-/* A shard to copy whole: its cells' bytes, its first and last cells. */
-struct block {
-	int		 fd;
-	off_t		 from, to;	/* the cells' lines, first to last */
-	size_t		 firstlen;	/* the first cell's line */
-	unsigned long long ncells;	/* as its end record counts them */
-	char		 firstpath[QT_MAXLEVEL + 1], lastpath[QT_MAXLEVEL + 1];
-	struct cell	 last;
-};
-
-struct input {
-	const char	*name;
-	const char	*path;	/* the operand */
-	struct qtreader	*r;
-	struct qtrec	 rec;	/* the current cell */
-	int		 done;
-	long		 lineno;	/* of the cell before it */
-	struct block	*b;	/* not NULL: copied whole */
-};
+#include "qtcat.h"
 
 /* A cell held under -u: what qt_cell needs, and where it was read. */
 struct heldcell {
@@ -66,14 +51,16 @@ struct heldcell {
 static struct input *in;
 static int nin, unsealed, checkall;
 
-/* The first head as its bytes, the qtree line first, and its records. */
-static char *headtext;
-static size_t headlen;
-static unsigned long long headrecs;
-static long headlines;
+int dim;
+static const char *dimname;	/* the input that said it */
+char lastdigit = '3';
+static struct universe3 u3;	/* a 3D stream's, to write its cells */
 
-#define CHUNK	(1 << 20)	/* a read of a shard copied whole */
-static char *chunk;
+char *headtext;
+size_t headlen;
+unsigned long long headrecs;
+long headlines;
+char *chunk;
 
 /* The first head read, to compare and write, and its input's name. */
 static struct qtrec **head;
@@ -205,6 +192,86 @@ samehead(const struct input *p, size_t j, const struct qtrec *rec, long line)
 }
 
 static int readhead(struct input *);
+static int pathorder(const struct cell *, const struct cell *);
+
+/* Preorder: a 2D cell's by its grid place, a 3D one's by its path. */
+static int (*cellorder)(const struct cell *, const struct cell *) = cell_cmp;
+
+/* Input p's first record says its dimension d: the first input's. */
+static void
+setdim(struct input *p, int d)
+{
+	p->dim = d;
+	if (dim == 0) {
+		dim = d;
+		dimname = p->name;
+	} else if (d != dim)
+		errat(p->name, 1, "a %dD stream, and %s holds a %dD one: qtcat "
+		    "joins trees of one dimension", d, dimname, dim);
+	if (d == 3) {
+		lastdigit = '7';
+		cellorder = pathorder;
+	}
+}
+
+/*
+ * The next record of input p into rec, a 3D stream's (read3.c) given as a
+ * 2D one's: its text and count, a cell's path, level, class and number.
+ */
+static enum qtkind
+readrec(struct input *p, struct qtrec *rec)
+{
+	struct qt3rec *r3 = &p->rec3;
+	enum qtkind kind;
+
+	if (p->s == NULL) {
+		if ((kind = qt_read(p->r, rec)) != QT_SOLID) {
+			if (p->dim == 0 && kind != QT_EOF)
+				setdim(p, 2);
+			return kind;
+		}
+		setdim(p, 3);
+		p->s = qt3_open(p->r);
+	}
+	rec->kind = kind = qt3_read(p->s, r3);
+	rec->line = r3->line;
+	rec->len = r3->len;
+	rec->lineno = r3->lineno;
+	rec->nrec = r3->nrec;
+	if (kind == QT_NODE || kind == QT_LEAF) {
+		memset(&rec->c, 0, sizeof(rec->c));
+		rec->c.path = r3->c.path;
+		rec->c.level = r3->c.level;
+		rec->c.class = r3->c.class;
+		rec->c.id = r3->c.id;
+		rec->c.frac = -1;
+	} else if (kind == QT_UNIVERSE && headname == NULL)
+		u3 = r3->u;
+	return kind;
+}
+
+/* The next record: a 2D stream's straight from its reader once known. */
+static inline enum qtkind
+nextrec(struct input *p, struct qtrec *rec)
+{
+	return p->dim == 2 ? qt_read(p->r, rec) : readrec(p, rec);
+}
+
+/* Preorder of 3D cells: their paths', "." first. */
+static int
+pathorder(const struct cell *a, const struct cell *b)
+{
+	return strcmp(a->path, b->path);
+}
+
+/* Input p's reader closed, at its end or to open it again. */
+static void
+closein(struct input *p)
+{
+	qt3_close(p->s);
+	p->s = NULL;
+	qt_close(p->r);
+}
 
 /*
  * The first cell of the next stream of input p that has one, into p->rec,
@@ -213,10 +280,10 @@ static int readhead(struct input *);
 static int
 nextstream(struct input *p)
 {
-	while (qt_next(p->r))
+	while (p->s != NULL ? qt3_next(p->s) : qt_next(p->r))
 		if (readhead(p))
 			return 1;
-	qt_close(p->r);
+	closein(p);
 	p->done = 1;
 	return 0;
 }
@@ -237,18 +304,23 @@ nextcell(struct input *p)
 	prev.level = p->rec.c.level;
 	prev.ix = p->rec.c.ix;
 	prev.iy = p->rec.c.iy;
+	if (p->s != NULL) {	/* the reader's path changes with the cell */
+		memcpy(path, p->rec.c.path, strlen(p->rec.c.path) + 1);
+		prev.path = path;
+	}
 	p->lineno = p->rec.lineno;
 	for (;;) {
-		switch (kind = qt_read(p->r, &p->rec)) {
+		switch (kind = nextrec(p, &p->rec)) {
 		case QT_EOF:
 			if (!nextstream(p))
 				return 0;
-			if (cell_cmp(&prev, &p->rec.c) > 0)
+			if (cellorder(&prev, &p->rec.c) > 0)
 				errat(p->name, p->rec.lineno, "cell %s comes "
 				    "before cell %s (line %ld) in preorder: "
 				    "an input's streams must follow each other "
-				    "in preorder", p->rec.c.path, cellpath(path,
-				    prev.level, prev.ix, prev.iy), p->lineno);
+				    "in preorder", p->rec.c.path, dim == 3 ?
+				    prev.path : cellpath(path, prev.level,
+				    prev.ix, prev.iy), p->lineno);
 			return 1;
 		case QT_NODE:
 		case QT_LEAF:
@@ -281,7 +353,7 @@ readhead(struct input *p)
 	long line = 0;
 	int keep = headname == NULL;
 
-	while ((kind = qt_read(p->r, &rec)) != QT_EOF) {
+	while ((kind = nextrec(p, &rec)) != QT_EOF) {
 		if (kind == QT_NODE || kind == QT_LEAF)
 			break;
 		if (kind == QT_VERTEX || kind == QT_ELEM)
@@ -295,7 +367,7 @@ readhead(struct input *p)
 				    sizeof(*head));
 			}
 			head[nhead++] = qt_keep(&rec);
-			if (kind == QT_UNIVERSE)
+			if (kind == QT_UNIVERSE && p->s == NULL)
 				qt_setuniverse(&rec.u);
 		} else
 			samehead(p, j, &rec, 0);
@@ -331,7 +403,8 @@ wanted(char *want)
 		want[last.level] = '0';
 		return last.level + 1;
 	}
-	for (j = last.level; j > root.level && last.path[j - 1] == '3'; j--)
+	for (j = last.level; j > root.level && last.path[j - 1] == lastdigit;
+	    j--)
 		;
 	if (j == root.level)
 		return -1;
@@ -357,7 +430,7 @@ follows(const struct cell *c)
 	    c->path[j - 1] != last.path[j - 1] + 1)
 		return -1;
 	for (k = j; k < last.level; k++)
-		if (last.path[k] != '3')
+		if (last.path[k] != lastdigit)
 			return -1;
 	return memcmp(c->path, last.path, j - 1) == 0 ? j - 1 : -1;
 }
@@ -412,7 +485,17 @@ putcell(const struct cell *c, const char *name, long lineno)
 			return;
 		k = 0;
 	}
-	if (c->frac >= 0)
+	if (dim == 3) {
+		struct cell3 c3;
+
+		memset(&c3, 0, sizeof(c3));
+		c3.path = c->path;
+		c3.level = c->level;
+		pathcell3(c->path, c->level, &c3.ix, &c3.iy, &c3.iz);
+		c3.class = c->class;
+		c3.id = c->id;
+		qt3_cell(&u3, &c3);
+	} else if (c->frac >= 0)
 		qt_cellfrac(c, c->id, c->frac);
 	else
 		qt_cell(c, c->id);
@@ -433,12 +516,12 @@ headbytes(void)
 {
 	size_t j;
 
-	headlen = 8;
+	headlen = 10;
 	for (j = 0; j < nhead; j++)
 		headlen += head[j]->len + 1;
 	headtext = xmalloc(headlen);
-	memcpy(headtext, "qtree 1\n", 8);
-	headlen = 8;
+	headlen = dim == 3 ? 10 : 8;
+	memcpy(headtext, dim == 3 ? "qtree 1 3\n" : "qtree 1\n", headlen);
 	headlines = 1;
 	for (j = 0; j < nhead; j++) {
 		memcpy(headtext + headlen, head[j]->line, head[j]->len);
@@ -447,185 +530,6 @@ headbytes(void)
 		headrecs += head[j]->nrec;
 		headlines += (long)head[j]->nrec;
 	}
-}
-
-/* n bytes at off, all of them, or -1. */
-static ssize_t
-readat(int fd, char *buf, size_t n, off_t off)
-{
-	size_t got = 0;
-	ssize_t k;
-
-	while (got < n) {
-		if ((k = pread(fd, buf + got, n - got, off + (off_t)got)) < 0) {
-			if (errno == EINTR)
-				continue;
-			return -1;
-		}
-		if (k == 0)
-			break;
-		got += (size_t)k;
-	}
-	return (ssize_t)got;
-}
-
-/* An unsigned decimal of at most 18 digits from s to end, or -1. */
-static long long
-decimal(const char *s, const char *end)
-{
-	long long v = 0;
-
-	if (s == end || end - s > 18 || (*s == '0' && end - s > 1))
-		return -1;
-	for (; s < end; s++) {
-		if (*s < '0' || *s > '9')
-			return -1;
-		v = 10 * v + (*s - '0');
-	}
-	return v;
-}
-
-/*
- * The cell of line s (n bytes, its newline excluded), for the merge's
- * order and checks: "node PATH LEVEL IX IY X Y SIZE" or "leaf ... CLASS",
- * the path, level, column and row agreeing; its corner and size, like
- * every cell between, are copied as they are.  Returns -1 for anything
- * else, which the reader then reads.
- */
-static int
-blockcell(const char *s, size_t n, struct cell *c, char *path)
-{
-	const char *f[10], *e = s + n, *p = s;
-	long long level, ix, iy;
-	uint64_t px, py;
-	int nf = 0;
-
-	while (p < e && nf < 10) {
-		f[nf++] = p;
-		while (p < e && *p != ' ')
-			p++;
-		if (p < e)
-			p++;
-	}
-	if (p != e || s[n - 1] == ' ')
-		return -1;
-	if (nf == 8 && memcmp(s, "node ", 5) == 0)
-		c->class = 0;
-	else if (nf == 9 && memcmp(s, "leaf ", 5) == 0 && e - f[8] == 1 &&
-	    strchr("FEP", *f[8]) != NULL)
-		c->class = *f[8];
-	else
-		return -1;
-	if ((level = decimal(f[2], f[3] - 1)) < 0 || level > QT_MAXLEVEL ||
-	    (ix = decimal(f[3], f[4] - 1)) < 0 ||
-	    (iy = decimal(f[4], f[5] - 1)) < 0 ||
-	    f[2] - 1 - f[1] != (level > 0 ? level : 1))
-		return -1;
-	memcpy(path, f[1], f[2] - 1 - f[1]);
-	path[f[2] - 1 - f[1]] = '\0';
-	if (cell_frompath(path, (int)level, &px, &py) < 0 ||
-	    px != (uint64_t)ix || py != (uint64_t)iy)
-		return -1;
-	if (level == 0)
-		path[0] = '\0';
-	c->path = level > 0 ? path : ".";
-	c->level = (int)level;
-	c->ix = px;
-	c->iy = py;
-	c->id = 0;
-	c->frac = -1;
-	c->text = NULL;
-	c->textlen = 0;
-	return 0;
-}
-
-/*
- * Whether input p, the file at path, is a shard to copy whole: a regular
- * file, one stream, the first head byte for byte, then cells from its
- * first to its last in preorder of one subtree (the last a leaf that ends
- * the subtree of the first), then the end record.  Else 0, and the reader
- * reads it.
- */
-static int
-probe(struct input *p, const char *path)
-{
-	struct block b;
-	struct stat st;
-	char tail[512], *t, *nl, *end;
-	size_t k, n;
-	long long count;
-	int fd;
-
-	if (strcmp(path, "-") == 0 || (fd = open(path, O_RDONLY)) < 0)
-		return 0;
-	memset(&b, 0, sizeof(b));
-	b.fd = fd;
-	if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode) ||
-	    st.st_size < (off_t)headlen + 16)
-		goto no;
-	/* the head, byte for byte */
-	if (chunk == NULL)
-		chunk = xmalloc(CHUNK);
-	for (k = 0; k < headlen; k += n) {
-		n = headlen - k < CHUNK ? headlen - k : CHUNK;
-		if (readat(fd, chunk, n, (off_t)k) != (ssize_t)n ||
-		    memcmp(chunk, headtext + k, n) != 0)
-			goto no;
-	}
-	/* the first cell */
-	n = (size_t)(st.st_size - (off_t)headlen) < sizeof(tail) ?
-	    (size_t)(st.st_size - (off_t)headlen) : sizeof(tail);
-	if (readat(fd, tail, n, (off_t)headlen) != (ssize_t)n ||
-	    (nl = memchr(tail, '\n', n)) == NULL ||
-	    blockcell(tail, nl - tail, &p->rec.c, b.firstpath) < 0)
-		goto no;
-	b.from = (off_t)headlen;
-	b.firstlen = nl - tail + 1;
-	/* the end record, and the last cell before it */
-	n = (size_t)(st.st_size - b.from) < sizeof(tail) ?
-	    (size_t)(st.st_size - b.from) : sizeof(tail);
-	if (readat(fd, tail, n, st.st_size - (off_t)n) != (ssize_t)n ||
-	    tail[n - 1] != '\n')
-		goto no;
-	end = tail + n - 1;
-	for (t = end; t > tail && t[-1] != '\n'; t--)
-		;
-	if (t == tail || end - t < 5 || memcmp(t, "end ", 4) != 0 ||
-	    (count = decimal(t + 4, end)) < 0 ||
-	    (unsigned long long)count <= headrecs)
-		goto no;
-	b.ncells = (unsigned long long)count - headrecs;
-	b.to = st.st_size - (off_t)(tail + n - t);
-	for (nl = t - 1; nl > tail && nl[-1] != '\n'; nl--)
-		;
-	if (nl == tail && b.to - (off_t)(t - nl) != b.from)
-		goto no;	/* the last cell's line is not all in tail */
-	if (blockcell(nl, t - 1 - nl, &b.last, b.lastpath) < 0)
-		goto no;
-	/*
-	 * One subtree, whole: a leaf alone, or a node and, last, the leaf
-	 * 33...3 under it.
-	 */
-	if (p->rec.c.class != 0) {
-		if (b.to - b.from != (off_t)b.firstlen)
-			goto no;
-	} else {
-		if (b.last.class == 0 || b.last.level <= p->rec.c.level ||
-		    memcmp(b.lastpath, b.firstpath, p->rec.c.level) != 0)
-			goto no;
-		for (k = p->rec.c.level; k < (size_t)b.last.level; k++)
-			if (b.lastpath[k] != '3')
-				goto no;
-	}
-	p->b = xmalloc(sizeof(*p->b));
-	*p->b = b;
-	p->rec.c.path = p->b->firstpath[0] ? p->b->firstpath : ".";
-	p->b->last.path = p->b->lastpath[0] ? p->b->lastpath : ".";
-	p->rec.lineno = headlines + 1;
-	return 1;
-no:
-	close(fd);
-	return 0;
 }
 
 /*
@@ -641,42 +545,11 @@ unblock(struct input *p)
 	free(p->b);
 	p->b = NULL;
 	fp = openin(p->path, &p->name);
-	p->r = qt_open(fp, p->name, QT_NEEDUNIVERSE | QT_ARCS | QT_CONCAT);
+	p->r = qt_open(fp, p->name,
+	    QT_NEEDUNIVERSE | QT_ARCS | QT_CONCAT | QT_SOLIDS);
+	p->dim = 0;
 	if (!readhead(p))
 		nextstream(p);
-}
-
-/*
- * The newlines of n bytes, eight at a time: a byte of x ^ 0x0a...0a is
- * 0 at a newline, and (y & 0x7f) + 0x7f has its high bit clear only for
- * y 0 (y's own high bit or'ed in).
- */
-static unsigned long long
-newlines(const char *s, size_t n)
-{
-	const uint64_t pairs = 0x00ff00ff00ff00ffu, quads = 0x0001000100010001u;
-	const uint64_t high = 0x8080808080808080u;
-	const uint64_t low = 0x7f7f7f7f7f7f7f7fu, nl = 0x0a0a0a0a0a0a0a0au;
-	unsigned long long c = 0;
-	uint64_t x, y, z, acc;
-	size_t i = 0, k;
-
-	while (n - i >= 8) {
-		/* at most 255 words into one byte-wise sum */
-		acc = 0;
-		for (k = 0; k < 255 && n - i >= 8; k++, i += 8) {
-			memcpy(&x, s + i, 8);
-			y = x ^ nl;
-			z = ~(((y & low) + low) | y) & high;
-			acc += z >> 7;
-		}
-		/* the eight byte sums, up to 255 each, as four of 16 bits */
-		acc = (acc & pairs) + (acc >> 8 & pairs);
-		c += (acc * quads) >> 48;
-	}
-	for (; i < n; i++)
-		c += s[i] == '\n';
-	return c;
 }
 
 /* Writes shard p whole, its first cell at its place in the merge. */
@@ -748,7 +621,7 @@ endtree(void)
 static int
 before(const struct input *a, const struct input *b)
 {
-	int d = cell_cmp(&a->rec.c, &b->rec.c);
+	int d = cellorder(&a->rec.c, &b->rec.c);
 
 	return d < 0 || (d == 0 && a < b);
 }
@@ -790,7 +663,8 @@ merge(void)
 			q = n > 1 ? h[1] : NULL;
 			if (n > 2 && before(h[2], h[1]))
 				q = h[2];
-			if (q != NULL && cell_cmp(&q->rec.c, &p->b->last) <= 0) {
+			if (q != NULL &&
+			    cellorder(&q->rec.c, &p->b->last) <= 0) {
 				unblock(p);
 				if (p->done)
 					h[0] = h[--n];
@@ -923,14 +797,17 @@ main(int argc, char *argv[])
 			continue;
 		}
 		fp = openin(argv[i], &in[i].name);
-		in[i].r = qt_open(fp, in[i].name,
-		    QT_NEEDUNIVERSE | QT_ARCS | (unsealed ? QT_UNSEALED : QT_CONCAT));
+		in[i].r = qt_open(fp, in[i].name, QT_NEEDUNIVERSE | QT_ARCS |
+		    QT_SOLIDS | (unsealed ? QT_UNSEALED : QT_CONCAT));
 		if (!readhead(&in[i]))
 			nextstream(&in[i]);
 	}
 	if (headname == NULL)
 		errat(in[0].name, 0, "empty input: not a qtree stream");
-	qt_header();
+	if (dim == 3)
+		qt3_header();
+	else
+		qt_header();
 	for (j = 0; j < nhead; j++)
 		qt_echo(head[j]);
 	if (unsealed)

@@ -270,6 +270,61 @@ leaf(struct qtreader *r, const struct options *o, const struct universe *u,
 		meshleaf(c, kept, *id);
 }
 
+/*
+ * A 3D stream (qtree(5), Solids): its leaves kept and numbered as in 2D;
+ * the head written again, the nodes dropped.  Corners, fractions and
+ * shapes are 2D ideas (squares, polygons), refused as usage errors.
+ */
+static int
+leaves3(struct qtreader *r, const struct options *o)
+{
+	struct qt3reader *s;
+	struct qt3rec rec;
+	struct universe3 u = { 0, 0, 0, 1 };
+	unsigned long long id = 0;
+
+	if (o->format != QTREE)
+		die(2, "-f %s: a 3D stream's leaves are cubes, not polygons; "
+		    "only the qtree format writes them",
+		    o->format == WKT ? "wkt" : "geojson");
+	if (o->aflag)
+		die(2, "-a: volume fractions of a 3D stream's leaves are not "
+		    "computed");
+	if (o->nflag)
+		die(2, "-n: a mesh of a 3D stream's leaves is not written");
+	s = qt3_open(r);
+	qt3_header();
+	while (qt3_read(s, &rec) != QT_EOF)
+		switch (rec.kind) {
+		case QT_UNIVERSE:
+			u = rec.u;
+			qt3_universe(&u);
+			break;
+		case QT_LEVEL:
+			qt_level(rec.level);
+			break;
+		case QT_SHELL:
+			qt3_shell(&rec.shell);
+			break;
+		case QT_NODE:
+			break;
+		case QT_LEAF:
+			if (o->keep & CELL_CLASSBIT(rec.c.class)) {
+				rec.c.id = ++id;
+				qt3_cell(&u, &rec.c);
+			}
+			break;
+		default:
+			qt3_echo(&rec);
+			break;
+		}
+	qt3_close(s);
+	qt_close(r);
+	qt_end();
+	closeout();
+	return 0;
+}
+
 int
 main(int argc, char *argv[])
 {
@@ -288,13 +343,15 @@ main(int argc, char *argv[])
 		corners = corner_new(0);
 
 	/* Cut cells are clipped by straight edges only (lib/cut.c). */
-	r = qt_openpath(argc == 1 ? argv[0] : "-",
+	r = qt_openpath(argc == 1 ? argv[0] : "-", QT_SOLIDS |
 	    (o.aflag ? 0 : QT_ARCS) | (o.verbose ? QT_VERBOSE : 0));
+	if ((kind = qt_read(r, &rec)) == QT_SOLID)
+		return leaves3(r, &o);
 	if (o.format == QTREE)
 		qt_header();
 	else if (o.format == GEOJSON)
 		printf("{\"type\":\"FeatureCollection\",\"features\":[\n");
-	while ((kind = qt_read(r, &rec)) != QT_EOF) {
+	for (; kind != QT_EOF; kind = qt_read(r, &rec)) {
 		if (o.aflag && kind == QT_UNIVERSE)
 			cutter = cut_new(&rec.u);
 		else if (o.aflag && kind == QT_RING)

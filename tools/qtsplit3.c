@@ -66,6 +66,11 @@ readsolid(struct qtreader *r)
 			qt_fail(r, "the input already holds cells: qtsplit "
 			    "takes shells");
 			break;
+		case QT_OBJECT:
+			qt_fail(r, "the input combines objects (object record, "
+			    "from qtbool): qtsplit decomposes one solid; "
+			    "split each and combine the trees");
+			break;
 		default:
 			keeprec(&rec);
 			break;
@@ -86,6 +91,7 @@ emit3(int level, uint64_t ix, uint64_t iy, uint64_t iz, char class)
 	c.level = level;
 	c.ix = ix, c.iy = iy, c.iz = iz;
 	c.class = class;
+	c.id = 0;
 	qt3_cell(&in3.u, &c);
 	if (level > w3.deepestseen)
 		w3.deepestseen = level;

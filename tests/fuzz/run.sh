@@ -2,7 +2,8 @@
 # Fuzzes every parser: polyread in each of its formats and the qtree(5)
 # reader in every program that reads it (rings through qtsplit, cells
 # through qtstats, qtleaves -n, qtbalance, qtmesh (-H, and -b with its
-# angle bounds: bfit), qtcat and qtbool, meshes
+# angle bounds: bfit), qtcat and qtbool (qtcat3 and qtbool3 on 3D
+# streams), meshes
 # through qt2svg), each built with AFL++ instrumentation and the address and
 # undefined-behaviour sanitizers, for FUZZTIME seconds (default 60), or
 # about FUZZEXECS executions when that is set, from the seed corpus in
@@ -82,7 +83,7 @@ wait_builds() {
 # The targets (default all), and the program each one runs: only those
 # programs are built.
 targets=${FUZZTARGETS:-brep xy wkt poly csv geojson qtree cells numbered \
-    balance qtmesh bfit qtcat qtbool mesh off stl obj ply}
+    balance qtmesh bfit qtcat qtbool qtcat3 qtbool3 mesh off stl obj ply}
 program() {
 	case $1 in
 	qtree)	echo qtsplit ;;
@@ -90,6 +91,8 @@ program() {
 	numbered) echo qtleaves ;;
 	balance) echo qtbalance ;;
 	qtmesh|qtcat|qtbool) echo "$1" ;;
+	qtcat3)	echo qtcat ;;
+	qtbool3) echo qtbool ;;
 	bfit)	echo qtmesh ;;
 	mesh)	echo qt2svg ;;
 	*)	echo polyread ;;
@@ -109,7 +112,7 @@ need qtstats tools/qtstats/*.c
 need qtleaves tools/qtleaves.c
 need qtbalance tools/qtbalance.c
 need qtmesh tools/qtmesh/*.c
-need qtcat tools/qtcat.c
+need qtcat tools/qtcat.c tools/qtcatcopy.c
 need qt2svg tools/qt2svg/*.c
 need qtbool tools/qtbool.c
 wait_builds
@@ -147,6 +150,8 @@ fuzzone() {
 	bfit)	set -- tests/fuzz/qtmesh -b @@ ;;
 	qtcat)	set -- tests/fuzz/qtcat @@ tests/fuzz/seeds/qtcat/shard.qt ;;
 	qtbool)	set -- tests/fuzz/qtbool -o xor @@ tests/fuzz/seeds/qtbool/tree.qt ;;
+	qtcat3)	set -- tests/fuzz/qtcat @@ tests/fuzz/seeds/qtcat3/shards.q3 ;;
+	qtbool3) set -- tests/fuzz/qtbool -o xor @@ tests/fuzz/seeds/qtbool3/tree.q3 ;;
 	mesh)	set -- tests/fuzz/qt2svg @@ ;;
 	*)	set -- tests/fuzz/polyread -f "$target" @@ ;;
 	esac

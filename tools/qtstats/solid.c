@@ -23,6 +23,7 @@ static struct {
 	struct universe3 u;
 	int		 haveu, deepest;
 	unsigned long long nshells, ncavities, nfaces;
+	long		 nobjects;	/* a combined stream's (qtbool) */
 	struct xsum	 vol6;		/* six times the volume, exactly */
 	double		 area, mx, my, mz;	/* area; 24 times moments */
 } s3 = { .deepest = -1 };
@@ -110,10 +111,16 @@ report3(int table)
 	unsigned long long nodes = 0, leaves[3] = { 0, 0, 0 };
 	int l, k;
 
+	if (s3.nobjects > 0)
+		putcount("objects", s3.nobjects);
 	putcount("shells", s3.nshells);
 	putcount("cavities", s3.ncavities);
 	putcount("faces", s3.nfaces);
-	if (s3.nshells > 0) {
+	if (s3.nobjects > 0)
+		printf("# left out, the shells bound %ld objects combined: "
+		    "polyhedron_volume surface_area centroid_x centroid_y "
+		    "centroid_z\n", s3.nobjects);
+	else if (s3.nshells > 0) {
 		putreal("polyhedron_volume", vol);
 		putreal("surface_area", s3.area);
 		if (vol != 0) {
@@ -181,6 +188,9 @@ stats3main(struct qtreader *r, int table)
 		case QT_UNIVERSE:
 			s3.u = rec.u;
 			s3.haveu = 1;
+			break;
+		case QT_OBJECT:
+			s3.nobjects = rec.object;
 			break;
 		case QT_SHELL:
 			shell3(&rec.shell);
