@@ -8,9 +8,12 @@
 #   make && sh tools/bench/benchshards.sh	(from the project root)
 #
 # The polygon is the star of 10^5 vertices (tools/gen/genpoly.awk) at level
-# 18, cut at level 2 (16 shards).  Every path's stages are all timed: the
-# top (qtsplit -t), the jobs, parallel, qtcat or qtstats -m; output goes to
-# /dev/null.  Wall seconds are medians of BENCH_RUNS runs (default 3) by
+# 18, cut at level 2 (16 shards).  The files and map-reduce paths give
+# parallel as many jobs as run at once (parallel -X, qtsplit -r{} with
+# several roots, -o for the files), each reading the polygon once; rows
+# "a job a shard" time them as before, one job for each root.  Every
+# path's stages are all timed: the top (qtsplit -t), the jobs, parallel,
+# qtcat or qtstats -m; output goes to /dev/null.  Wall seconds are medians of BENCH_RUNS runs (default 3) by
 # hyperfine, CPU seconds (user + system, every process of the path) are
 # GNU time's over one more run, and so is the CPU of each stage of the -j 2
 # runs.  Each path's output is checked first: the same bytes as the one
@@ -78,12 +81,20 @@ pipe() {
 	    "$C top.qt - >/dev/null"
 }
 tofiles() {
+	echo "$Q -t $cut p.qt >top.qt && $P -j $1 -X '$Q -r{} -o s/%s.qt p.qt'" \
+	    "<roots && $C top.qt $files >/dev/null"
+}
+tofiles1() {
 	echo "$Q -t $cut p.qt >top.qt && $P -j $1 '$Q -r {} p.qt >s/{}.qt'" \
 	    "<roots && $C top.qt $files >/dev/null"
 }
 catonly() { echo "$C top.qt $files >/dev/null"; }
 figs() { echo "$Q p.qt | $S >/dev/null"; }
 mapred() {
+	echo "{ $Q -t $cut p.qt | $S -s; $P -j $1 -X '$Q -r{} p.qt | $S -s'" \
+	    "<roots; } | $S -m >/dev/null"
+}
+mapred1() {
 	echo "{ $Q -t $cut p.qt | $S -s; $P -j $1 '$Q -r {} p.qt | $S -s'" \
 	    "<roots; } | $S -m >/dev/null"
 }
@@ -102,6 +113,11 @@ for j in 1 2; do
 		die "failed: $(mapred $j)"
 	cmp -s one.fig mr.fig || die "map-reduce, -j $j: not the one run's figures"
 done
+sh -c "$(tofiles1 2 | sed 's|>/dev/null$|\| cksum >files.sum|')" ||
+	die "failed: $(tofiles1 2)"
+cmp -s one.sum files.sum || die "shard files a job each: not the one run"
+sh -c "$(mapred1 2 | sed 's|>/dev/null$|>mr.fig|')" || die "failed: $(mapred1 2)"
+cmp -s one.fig mr.fig || die "map-reduce a job a shard: not the one run's figures"
 outbytes=$($C top.qt $files | wc -c)
 
 # wall CMD: the median wall seconds of $runs runs.
@@ -148,6 +164,7 @@ for j in 1 2; do
 	    "$(tofiles $j)" "$w1" "$c1"
 done >files.rows
 cat files.rows
+row "  the same, a job a shard" 2 "$(tofiles1 2)" "$w1" "$c1"
 wc=$(wall "$(catonly)")
 set -- $(cpu "$(catonly)")
 awk -v w="$wc" -v c="$1" -v b="$outbytes" 'BEGIN {
@@ -166,6 +183,7 @@ for j in 1 2; do
 	    "$wf" "$cf"
 done >mr.rows
 cat mr.rows
+row "  the same, a job a shard" 2 "$(mapred1 2)" "$wf" "$cf"
 
 # The CPU of each stage of the -j 2 runs, by GNU time around each process
 # (a job: its shell and its programs); parallel's own is its total less
@@ -182,30 +200,35 @@ p_top=$(stage top.t) p_jobs=$(stage jobs.t) p_par=$(stage par.t)
 p_cat=$(stage merge.t)
 : >top.t; : >jobs.t; : >par.t; : >merge.t
 sh -c "$T top.t $Q -t $cut p.qt >top.qt &&
-    $T par.t $P -j 2 \"$T jobs.t $Q -r {} p.qt >s/{}.qt\" <roots &&
+    $T par.t $P -j 2 -X \"$T jobs.t $Q -r{} -o s/%s.qt p.qt\" <roots &&
     $T merge.t $C top.qt $files >/dev/null"
 f_top=$(stage top.t) f_jobs=$(stage jobs.t) f_par=$(stage par.t)
 f_cat=$(stage merge.t)
 : >top.t; : >jobs.t; : >par.t; : >merge.t
 sh -c "{ $T top.t $Q -t $cut p.qt | $T top.t $S -s;
-    $T par.t $P -j 2 \"$T jobs.t sh -c '$Q -r {} p.qt | $S -s'\" <roots; } |
+    $T par.t $P -j 2 -X \"$T jobs.t $Q -r{} p.qt | $T jobs.t $S -s\" <roots; } |
     $T merge.t $S -m >/dev/null"
 m_top=$(stage top.t) m_jobs=$(stage jobs.t) m_par=$(stage par.t)
 m_merge=$(stage merge.t)
-# The fixed cost of the shards: each job cut to its root alone.
+# The fixed cost of the shards: each job cut to its roots alone, two
+# jobs for all (-X), or a job a shard.
 R="$top/qtsplit -l $cut"
 : >jobs.t; : >par.t
-sh -c "$T par.t $P -j 2 \"$T jobs.t $R -r {} p.qt >/dev/null\" <roots"
+sh -c "$T par.t $P -j 2 -X \"$T jobs.t $R -r{} p.qt >/dev/null\" <roots"
 x_jobs=$(stage jobs.t) x_par=$(stage par.t)
 : >jobs.t; : >par.t
-sh -c "$T par.t $P -j 2 \"$T jobs.t sh -c '$R -r {} p.qt | $S -s'\" <roots >/dev/null"
+sh -c "$T par.t $P -j 2 -X \"$T jobs.t $R -r{} p.qt | $T jobs.t $S -s\" <roots >/dev/null"
 y_jobs=$(stage jobs.t) y_par=$(stage par.t)
+: >jobs.t; : >par.t
+sh -c "$T par.t $P -j 2 \"$T jobs.t $R -r {} p.qt | $T jobs.t $S -s\" <roots >/dev/null"
+z_jobs=$(stage jobs.t) z_par=$(stage par.t)
 
 awk -v k="$nshards" -v c1="$c1" -v cf="$cf" \
     -v p_top="$p_top" -v p_jobs="$p_jobs" -v p_par="$p_par" -v p_cat="$p_cat" \
     -v f_top="$f_top" -v f_jobs="$f_jobs" -v f_par="$f_par" -v f_cat="$f_cat" \
     -v m_top="$m_top" -v m_jobs="$m_jobs" -v m_par="$m_par" -v m_merge="$m_merge" \
-    -v x_jobs="$x_jobs" -v x_par="$x_par" -v y_jobs="$y_jobs" -v y_par="$y_par" '
+    -v x_jobs="$x_jobs" -v x_par="$x_par" -v y_jobs="$y_jobs" -v y_par="$y_par" \
+    -v z_jobs="$z_jobs" -v z_par="$z_par" '
 function line(label, v) { printf "  %-44s %7.3f\n", label, v }
 BEGIN {
 	print "# CPU seconds by stage, one -j 2 run each (user + system)"
@@ -227,12 +250,15 @@ BEGIN {
 	line("parallel: its own", m_par - m_jobs)
 	line("qtstats -m: the merge", m_merge)
 	line("all stages", m_top + m_par + m_merge)
-	printf "# fixed cost of %d shards (each job cut to its root alone), CPU s\n", k
-	line("qtsplit -r jobs and parallel", x_par)
+	printf "# fixed cost of %d shards (each job cut to its roots alone), CPU s\n", k
+	line("qtsplit -r jobs and parallel, 2 jobs (-X)", x_par)
 	line("  of which parallel", x_par - x_jobs)
-	line("qtsplit -r | qtstats -s jobs and parallel", y_par)
+	line("qtsplit -r | qtstats -s, 2 jobs (-X)", y_par)
 	line("  of which parallel", y_par - y_jobs)
-	printf "  %-44s %7.4f\n", "a shard, map-reduce", y_par / k
+	line("qtsplit -r | qtstats -s, a job a shard", z_par)
+	line("  of which parallel", z_par - z_jobs)
+	printf "  %-44s %7.4f\n", "a job a shard, map-reduce: a shard",
+	    z_par / k
 }'
 
 if [ -n "$deep" ]; then
@@ -241,13 +267,14 @@ if [ -n "$deep" ]; then
 	D="$top/qtsplit -l $deep"
 	$D -s "$cut" p.qt >roots
 	/usr/bin/time -f '%e %U %S %M' -o deep.t sh -c "{ $D -t $cut p.qt |
-	    $S -s; $P -j 2 '$D -r {} p.qt | $S -s' <roots; } | $S -m >deep.fig" ||
+	    $S -s; $P -j 2 -X '$D -r{} p.qt | $S -s' <roots; } | $S -m >deep.fig" ||
 		die "level $deep failed"
 	read -r dw du ds dm <deep.t
 	echo "# level $deep, map-reduce -j 2: $(grep '^leaves ' deep.fig)," \
 	    "$(grep '^cells ' deep.fig); wall $dw s, CPU $(awk -v u="$du" \
 	    -v s="$ds" 'BEGIN { print u + s }') s, largest process $dm KB;" \
-	    "files written: the $(wc -l <roots) jobs' sums, each under 4 KB"
+	    "files written: none (the $(wc -l <roots) shards' sums piped," \
+	    "under 4 KB each)"
 fi
 
 # The targets of issue 29.
