@@ -243,6 +243,16 @@ uniform() {
 	echo "end $(( $(wc -l < want) - 1 ))" >> want
 	diff -u want got
 	run -0 awk -f "$TOP/tests/oracle/treecheck.awk" got
+	# roots under a cell that no edge meets, full (030, a leaf at level
+	# 3, split by -m 5): each walk down starts where the last parted from
+	# it, the parity carried too
+	qtsplit -l 8 a.qt | grep -q '^leaf 030 3 .* F$'
+	qtsplit -l 8 -m 5 a.qt > full.qt
+	qtsplit -l 8 -m 5 -r 0300 -r 0301 -r 031 a.qt | grep -E '^(node|leaf)' > got
+	awk '($1 == "node" || $1 == "leaf") && $2 ~ /^(0300|0301|031)/' \
+	    full.qt > want
+	[ "$(grep -c ' F$' want)" -eq 24 ]
+	diff -u want got
 }
 
 @test "-o: each root's stream in its own file, the same bytes as -r of it alone" {

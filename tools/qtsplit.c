@@ -327,6 +327,19 @@ writehead(void)
 }
 
 /*
+ * The last walk down to a root of -r: the cells on the way, their edges'
+ * numbers and parities.  A cell's edges stay in the splitter's list of
+ * its level while the subtrees below it are walked, so the next root's
+ * walk starts where its path parts from this one.
+ */
+static struct {
+	char	 path[QT_MAXLEVEL + 1];
+	size_t	 n[QT_MAXLEVEL + 1];
+	int	 inside[QT_MAXLEVEL + 1];
+	int	 depth;		/* -1: none yet */
+} down = { .depth = -1 };
+
+/*
  * Walks down to the cell at path, as visit would, leaving its edges in
  * list[depth].edges[0..*n-1] and its parity in *inside; returns its depth.
  */
@@ -337,10 +350,21 @@ descend(const char *subtree, uint64_t *ix, uint64_t *iy, size_t *n,
 	int depth = strlen(subtree), i;
 
 	if (strcmp(subtree, ".") == 0)
-		return 0;
-	if (depth > QT_MAXLEVEL || cell_frompath(subtree, depth, ix, iy) < 0)
+		depth = 0;
+	if (depth > QT_MAXLEVEL ||
+	    (depth > 0 && cell_frompath(subtree, depth, ix, iy) < 0))
 		die(2, "-r: not a cell path: %s", subtree);
-	for (i = 0; i < depth; i++) {
+	if (down.depth < 0) {
+		down.n[0] = split_root(in.sp, &down.inside[0]);
+		down.depth = 0;
+	}
+	for (i = 0; i < depth && i < down.depth && subtree[i] == down.path[i];
+	    i++)
+		;
+	*n = down.n[i];
+	*inside = down.inside[i];
+	memcpy(walk.path, subtree, i);
+	for (; i < depth; i++) {
 		int parity[4], q = subtree[i] - '0';
 
 		if (!splits(i, *n))
@@ -353,9 +377,12 @@ descend(const char *subtree, uint64_t *ix, uint64_t *iy, size_t *n,
 			parity[q] = *inside;
 		*n = *n > 0 ? split_child(in.sp, i, *n, q) : 0;
 		*inside = parity[q];
-		walk.path[i] = subtree[i];
+		walk.path[i] = down.path[i] = subtree[i];
+		down.n[i + 1] = *n;
+		down.inside[i + 1] = *inside;
 	}
 	walk.path[depth] = '\0';
+	down.depth = depth;
 	return depth;
 }
 
@@ -496,7 +523,6 @@ splitroot(const char *path)
 	size_t n;
 	int inside, level;
 
-	n = split_root(in.sp, &inside);
 	level = descend(path, &ix, &iy, &n, &inside);
 	walk.root = level;
 	if (opt.cutopt != 0 && opt.cut < level)
