@@ -539,7 +539,10 @@ qt_bytes(void)
 	return w.flushed + w.len;
 }
 
-/* The end record is the promise that the stream is whole. */
+/*
+ * The end record is the promise that the stream is whole.  A stream
+ * written after it (qtsplit -o) counts its records afresh.
+ */
 void
 qt_end(void)
 {
@@ -550,4 +553,5 @@ qt_end(void)
 	*p++ = '\n';
 	w.len = p - w.buf;
 	flushout();
+	w.written = 0;
 }

@@ -100,6 +100,15 @@ oracle() {
 	done
 }
 
+@test "several roots (-r twice) and -o: 2D streams only, refused on a 3D one" {
+	polyread -u -1.5,-1.25,-1,3 "$SOLIDS/octa.off" > in.q3
+	run -2 --separate-stderr qtsplit -l 4 -r 0 -r 7 in.q3
+	[ "$stderr" = "qtsplit: -r: one root alone in a 3D stream" ]
+	run -2 --separate-stderr qtsplit -l 4 -o 's%s' -r 7 in.q3
+	[ "$stderr" = "qtsplit: -o: 2D streams only" ]
+	[ ! -e s7 ]
+}
+
 @test "-t and -s cut the tree: the top and the shards make the whole tree" {
 	polyread -u -1.5,-1.25,-1,3 "$SOLIDS/octa.off" > in.q3
 	qtsplit -l 4 in.q3 | grep -E '^(node|leaf)' > all

@@ -223,9 +223,81 @@ uniform() {
 	run -2 --separate-stderr qtsplit -l 8 -r 03 -s 1 a.qt
 	[ "$stderr" = "qtsplit: -s 1 is above the cell 03" ]
 	run -2 --separate-stderr qtsplit -s 1 -t 1 a.qt
-	[ "$stderr" = "usage: qtsplit [-hv] [-L ring=level] [-l level] [-m level] [-r path] [-s level | -t level] [file]" ]
+	[ "$stderr" = "usage: qtsplit [-hv] [-L ring=level] [-l level] [-m level] [-o pattern] [-r path ...] [-s level | -t level] [file]" ]
 	run -2 --separate-stderr qtsplit -s 51 a.qt
 	[ "$stderr" = "qtsplit: -s: level must be an integer from 0 to 50: 51" ]
+}
+
+@test "-r given several times: one head, the subtrees in turn, one end counting all" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	qtsplit -l 8 a.qt > full.qt
+	# roots of several levels, a leaf among them (110)
+	awk '$2 == "110" { print $1 }' full.qt | grep -qx leaf
+	qtsplit -l 8 -r 01 -r 022 -r 03 -r 110 -r 2 a.qt > got
+	# the whole run's head, then its cells under those roots, in its
+	# order, then an end record counting the head's records and them
+	awk '$1 == "node" || $1 == "leaf" { exit } 1' full.qt > want
+	awk '($1 == "node" || $1 == "leaf") && ($2 ~ /^(01|022|03|110|2)/)' \
+	    full.qt >> want
+	# every record but the qtree line
+	echo "end $(( $(wc -l < want) - 1 ))" >> want
+	diff -u want got
+	run -0 awk -f "$TOP/tests/oracle/treecheck.awk" got
+	# roots under a cell that no edge meets, full (030, a leaf at level
+	# 3, split by -m 5): each walk down starts where the last parted from
+	# it, the parity carried too
+	qtsplit -l 8 a.qt | grep -q '^leaf 030 3 .* F$'
+	qtsplit -l 8 -m 5 a.qt > full.qt
+	qtsplit -l 8 -m 5 -r 0300 -r 0301 -r 031 a.qt | grep -E '^(node|leaf)' > got
+	awk '($1 == "node" || $1 == "leaf") && $2 ~ /^(0300|0301|031)/' \
+	    full.qt > want
+	[ "$(grep -c ' F$' want)" -eq 24 ]
+	diff -u want got
+}
+
+@test "-o: each root's stream in its own file, the same bytes as -r of it alone" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	mkdir s
+	qtsplit -l 8 -o 's/%s-%%.qt' -r 01 -r 022 -r 03 a.qt > out
+	[ ! -s out ]
+	[ "$(ls s | tr '\n' ' ')" = "01-%.qt 022-%.qt 03-%.qt " ]
+	for r in 01 022 03; do
+		qtsplit -l 8 -r $r a.qt | cmp - "s/$r-%.qt"
+	done
+	# the whole tree alone, its root's path in the name
+	qtsplit -l 8 -o 'w%s' a.qt
+	qtsplit -l 8 a.qt | cmp - w.
+	# the top of a cut under each root, a file each
+	qtsplit -l 8 -t 4 -o 't%s' -r 1 -r 3 a.qt
+	qtsplit -l 8 -t 4 -r 3 a.qt | cmp - t3
+}
+
+@test "-r's roots out of preorder or nested, and -o's bad patterns, are refused" {
+	polyread "$SAMPLES/amoeba.brep" > a.qt
+	run -2 --separate-stderr qtsplit -r 1 -r 03 a.qt
+	[ "$stderr" = "qtsplit: -r: 03 comes before 1: give the roots in preorder, none inside another" ]
+	run -2 --separate-stderr qtsplit -r 03 -r 031 a.qt
+	[ "$stderr" = "qtsplit: -r: 031 lies inside 03: give the roots in preorder, none inside another" ]
+	run -2 --separate-stderr qtsplit -r 03 -r 03 a.qt
+	[ "$stderr" = "qtsplit: -r: 03 comes before 03: give the roots in preorder, none inside another" ]
+	run -2 --separate-stderr qtsplit -r . -r 1 a.qt
+	[ "$stderr" = "qtsplit: -r: 1 lies inside .: give the roots in preorder, none inside another" ]
+	run -2 --separate-stderr qtsplit -r 1 -r 4 a.qt
+	[ "$stderr" = "qtsplit: -r: not a cell path: 4" ]
+	run -2 --separate-stderr qtsplit -o 'x.qt' -r 1 a.qt
+	[ "$stderr" = "qtsplit: -o: no %s in the pattern, so every root's file would be the same: x.qt" ]
+	run -2 --separate-stderr qtsplit -o 'x%d%s' -r 1 a.qt
+	[ "$stderr" = "qtsplit: -o: %d: the pattern takes %s (the root's path) and %% alone: x%d%s" ]
+	run -2 --separate-stderr qtsplit -o 'x%s%' -r 1 a.qt
+	[ "$stderr" = "qtsplit: -o: % : the pattern takes %s (the root's path) and %% alone: x%s%" ]
+	run -2 --separate-stderr qtsplit -o 'x%s' -s 2 a.qt
+	[ "${stderr%% *}" = usage: ]
+	run -1 --separate-stderr qtsplit -o 'nodir/%s' -r 1 a.qt
+	[ "$stderr" = "qtsplit: nodir/1: No such file or directory" ]
+	# a root under a leaf, after others written: refused as alone
+	polyread "$SAMPLES/invl.brep" > i.qt
+	run -1 --separate-stderr qtsplit -r 0 -r 123 i.qt
+	[ "$stderr" = "qtsplit: -r: no cell 123 in the tree: cell 1 is a leaf" ]
 }
 
 @test "-m splits every cell down to the minimum level" {

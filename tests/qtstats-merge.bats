@@ -124,6 +124,38 @@ merges() {
 	[ "$stderr" = "qtstats: p.qt:1: not the output of qtstats -s: qtree" ]
 }
 
+@test "several shards in one stream (qtsplit -r given several roots): a root line each, the single run's figures" {
+	polyread "$SAMPLES/amoeba.brep" > p.qt
+	qtsplit -l 8 -s 2 p.qt > roots
+	[ "$(wc -l < roots)" -eq 16 ]
+	# the roots in three groups of 5, 5 and 6, in preorder, a job each
+	{ qtsplit -l 8 -t 2 p.qt | qtstats -s
+	  for g in 1,5 6,10 11,16; do
+		qtsplit -l 8 $(sed -n "${g}p" roots | sed 's/^/-r /') p.qt |
+		    qtstats -s; done; } > sums.txt
+	# each group's roots are its shards' roots, nodes, in its order
+	grep '^root ' sums.txt | sed 1d | cut -d' ' -f2 | diff - roots
+	[ "$(grep -c '^root .* N$' sums.txt)" -eq 17 ]
+	whole p.qt 8 -l > want.txt
+	qtstats -m -l sums.txt | cmp - want.txt
+	# a group short of a shard: its root is the top's node with nothing
+	# below it
+	{ qtsplit -l 8 -t 2 p.qt | qtstats -s
+	  qtsplit -l 8 $(sed '3d' roots | sed 's/^/-r /') p.qt | qtstats -s; } \
+	    > short.txt
+	run -1 --separate-stderr qtstats -m short.txt
+	[[ $stderr == *": node $(sed -n 3p roots) has no cells below it in any input: its shard is missing" ]]
+}
+
+@test "-s of a stream of leaves alone: the first cell is its one root" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 6 | grep -v '^node ' |
+	    qtcat -u > leaves.qt
+	[ "$(grep -c '^leaf ' leaves.qt)" -gt 100 ]
+	qtstats -s leaves.qt > sums.txt
+	[ "$(grep -c '^root ' sums.txt)" -eq 1 ]
+	grep -qx 'root 000 3 0 0 E' sums.txt
+}
+
 @test "-s refuses a mesh; -m takes neither -s nor -v" {
 	printf '0 0\n2 0\n0 2\n' | polyread -l 2 | qtsplit | qtleaves -n > m.qt
 	run -1 --separate-stderr qtstats -s m.qt
@@ -142,6 +174,20 @@ merges() {
 	  qtsplit -l 12 -s 2 p.qt |
 	    parallel --will-cite -j 2 'qtsplit -l 12 -r {} p.qt | qtstats -s'; } |
 	    qtstats -m -l | cmp - want.txt
+}
+
+@test "through GNU parallel -X: the roots shared among two jobs, each reading the rings once" {
+	command -v parallel >/dev/null 2>&1 ||
+		skip "GNU parallel is absent (Debian package parallel)"
+	awk -v shape=star -v n=10000 -f "$TOP/tools/gen/genpoly.awk" | polyread > p.qt
+	whole p.qt 12 -l > want.txt
+	{ qtsplit -l 12 -t 2 p.qt | qtstats -s
+	  qtsplit -l 12 -s 2 p.qt |
+	    parallel --will-cite -j 2 -X 'qtsplit -l 12 -r{} p.qt | qtstats -s'; } \
+	    > sums.txt
+	# two jobs: the top's sums and two more
+	[ "$(grep -c '^qtstats-sums ' sums.txt)" -eq 3 ]
+	qtstats -m -l sums.txt | cmp - want.txt
 }
 
 @test "qtstats(1): the map-reduce example prints what the page says, the single run's figures" {

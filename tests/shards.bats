@@ -55,6 +55,23 @@ same() {
 	same p.qt 12 0 1 3 12
 }
 
+@test "two jobs for all the shards (parallel -X, qtsplit -o): the files joined by qtcat are the single run's bytes" {
+	need_parallel
+	awk -v shape=star -v n=10000 -f "$TOP/tools/gen/genpoly.awk" | polyread > p.qt
+	qtsplit -l 12 p.qt > whole.qt
+	for k in 0 1 2 3; do
+		rm -rf s && mkdir s
+		qtsplit -l 12 -t $k p.qt > top.qt
+		qtsplit -l 12 -s $k p.qt > roots
+		parallel --will-cite -j 2 -X 'qtsplit -l 12 -r{} -o s/%s.qt p.qt' \
+		    < roots
+		# a file a root, named by it
+		ls -A s | sed 's/\.qt$//' | diff - roots
+		qtcat top.qt $(sed 's|.*|s/&.qt|' roots) | cmp - whole.qt
+		qtcat -c top.qt $(sed 's|.*|s/&.qt|' roots) | cmp - whole.qt
+	done
+}
+
 @test "a cut with no shards: the top alone is the tree, parallel runs nothing" {
 	need_parallel
 	polyread "$SAMPLES/invl.brep" > p.qt

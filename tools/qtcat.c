@@ -560,8 +560,6 @@ putblock(struct input *p)
 	struct cell *c = &p->rec.c;
 	unsigned long long lines = 0, want = b->ncells;
 	off_t at = b->from;
-	size_t n;
-	ssize_t k;
 
 	if (last.have && follows(c) < 0 && !misfit(c, p->name, p->rec.lineno)) {
 		at += (off_t)b->firstlen;	/* a node given again */
@@ -576,14 +574,8 @@ putblock(struct input *p)
 		root.lineno = p->rec.lineno;
 		root.have = 1;
 	}
-	for (; at < b->to; at += (off_t)n) {
-		n = b->to - at < CHUNK ? (size_t)(b->to - at) : CHUNK;
-		if ((k = readat(b->fd, chunk, n, at)) != (ssize_t)n)
-			die(1, "%s: %s", p->name, k < 0 ? strerror(errno) :
-			    "the file shrank while read");
-		lines += newlines(chunk, n);
-		qt_copy(chunk, n, 0);
-	}
+	while (at < b->to)
+		at += (off_t)copyspan(p, at, &lines);
 	if (lines != want)
 		errat(p->name, headlines + 1 + (long)b->ncells,
 		    "its end record counts %llu cells, the lines between its "

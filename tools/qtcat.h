@@ -37,9 +37,11 @@ extern int dim;
 extern char lastdigit;
 
 #define CHUNK	(1 << 20)	/* a read of a shard copied whole */
+#define WINDOW	(1 << 28)	/* a mapping of a shard copied whole */
 extern char *chunk;
 
 /* qtcatcopy.c */
 ssize_t	 readat(int, char *, size_t, off_t);
 int	 probe(struct input *, const char *);
 unsigned long long newlines(const char *, size_t);
+size_t	 copyspan(struct input *, off_t, unsigned long long *);

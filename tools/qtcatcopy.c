@@ -5,6 +5,7 @@
  * copies its bytes at the place of its first cell, counting their
  * newlines.
  */
+#include <sys/mman.h>
 #include <sys/stat.h>
 
 #include <errno.h>
@@ -201,34 +202,72 @@ no:
 }
 
 /*
- * The newlines of n bytes, eight at a time: a byte of x ^ 0x0a...0a is
- * 0 at a newline, and (y & 0x7f) + 0x7f has its high bit clear only for
- * y 0 (y's own high bit or'ed in).
+ * The newlines of n bytes: sixteen counts a byte wide, one for each byte
+ * of sixteen in turn, added up before any can pass 255 (a loop that
+ * compilers make vector instructions of).
  */
 unsigned long long
 newlines(const char *s, size_t n)
 {
-	const uint64_t pairs = 0x00ff00ff00ff00ffu, quads = 0x0001000100010001u;
-	const uint64_t high = 0x8080808080808080u;
-	const uint64_t low = 0x7f7f7f7f7f7f7f7fu, nl = 0x0a0a0a0a0a0a0a0au;
 	unsigned long long c = 0;
-	uint64_t x, y, z, acc;
-	size_t i = 0, k;
+	unsigned char acc[16];
+	size_t i = 0, r;
+	int j;
 
-	while (n - i >= 8) {
-		/* at most 255 words into one byte-wise sum */
-		acc = 0;
-		for (k = 0; k < 255 && n - i >= 8; k++, i += 8) {
-			memcpy(&x, s + i, 8);
-			y = x ^ nl;
-			z = ~(((y & low) + low) | y) & high;
-			acc += z >> 7;
-		}
-		/* the eight byte sums, up to 255 each, as four of 16 bits */
-		acc = (acc & pairs) + (acc >> 8 & pairs);
-		c += (acc * quads) >> 48;
+	while (n - i >= 16) {
+		memset(acc, 0, sizeof(acc));
+		for (r = 0; r < 255 && n - i >= 16; r++, i += 16)
+			for (j = 0; j < 16; j++)
+				acc[j] += s[i + j] == '\n';
+		for (j = 0; j < 16; j++)
+			c += acc[j];
 	}
 	for (; i < n; i++)
 		c += s[i] == '\n';
 	return c;
+}
+
+/*
+ * Copies the bytes of shard p from at, at most a window of them, mapped
+ * (so that they are read in place, and not at all on their way to
+ * /dev/null), else read; adds their newlines to *lines; returns how many.
+ */
+size_t
+copyspan(struct input *p, off_t at, unsigned long long *lines)
+{
+	static long page;
+	struct block *b = p->b;
+	struct stat st;
+	off_t base;
+	size_t n, len;
+	ssize_t k;
+	char *m;
+
+	if (page == 0 && (page = sysconf(_SC_PAGESIZE)) <= 0)
+		page = -1;
+	/* a mapping past the end of a file cut short would kill qtcat */
+	if (fstat(b->fd, &st) < 0)
+		die(1, "%s: %s", p->name, strerror(errno));
+	if (st.st_size < b->to)
+		die(1, "%s: the file shrank while read", p->name);
+	if (page > 0) {
+		base = at - at % page;
+		len = b->to - base < WINDOW ? (size_t)(b->to - base) : WINDOW;
+		m = mmap(NULL, len, PROT_READ, MAP_PRIVATE, b->fd, base);
+		if (m != MAP_FAILED) {
+			n = len - (size_t)(at - base);
+			posix_madvise(m, len, POSIX_MADV_SEQUENTIAL);
+			*lines += newlines(m + (at - base), n);
+			qt_copy(m + (at - base), n, 0);
+			munmap(m, len);
+			return n;
+		}
+	}
+	n = b->to - at < CHUNK ? (size_t)(b->to - at) : CHUNK;
+	if ((k = readat(b->fd, chunk, n, at)) != (ssize_t)n)
+		die(1, "%s: %s", p->name, k < 0 ? strerror(errno) :
+		    "the file shrank while read");
+	*lines += newlines(chunk, n);
+	qt_copy(chunk, n, 0);
+	return n;
 }

@@ -6,6 +6,7 @@
  * carried from its parent.  This file walks the tree in preorder and writes
  * it.
  */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,6 +33,9 @@ static struct options {
 	int	cut, cutopt;
 	struct ringlevel *rl;	/* -L, in the order given */
 	size_t	 nrl;
+	const char **roots;	/* -r, in the order given */
+	size_t	 nroots;
+	const char *out;	/* -o: a file a root, its name's pattern */
 } opt = { .maxlevel = -1, .cut = -1 };
 
 /*
@@ -71,7 +75,8 @@ static void
 usage(int help)
 {
 	usageexit(help, "usage: qtsplit [-hv] [-L ring=level] [-l level] "
-	    "[-m level] [-r path] [-s level | -t level] [file]\n");
+	    "[-m level] [-o pattern] [-r path ...] [-s level | -t level] "
+	    "[file]\n");
 }
 
 static void
@@ -306,6 +311,7 @@ ringlevels(void)
 		opt.deepest = opt.minlevel;
 }
 
+/* The head, the same in every stream written (-o writes several). */
 static void
 writehead(void)
 {
@@ -314,15 +320,24 @@ writehead(void)
 	qt_header();
 	qt_universe(&in.u);
 	qt_level(opt.deepest);
-	for (i = 0; i < in.nrings; i++) {
+	for (i = 0; i < in.nrings; i++)
 		qt_echo(in.rings[i]);
-		qt_free(in.rings[i]);
-	}
-	for (i = 0; i < in.nothers; i++) {
+	for (i = 0; i < in.nothers; i++)
 		qt_echo(in.others[i]);
-		qt_free(in.others[i]);
-	}
 }
+
+/*
+ * The last walk down to a root of -r: the cells on the way, their edges'
+ * numbers and parities.  A cell's edges stay in the splitter's list of
+ * its level while the subtrees below it are walked, so the next root's
+ * walk starts where its path parts from this one.
+ */
+static struct {
+	char	 path[QT_MAXLEVEL + 1];
+	size_t	 n[QT_MAXLEVEL + 1];
+	int	 inside[QT_MAXLEVEL + 1];
+	int	 depth;		/* -1: none yet */
+} down = { .depth = -1 };
 
 /*
  * Walks down to the cell at path, as visit would, leaving its edges in
@@ -335,10 +350,21 @@ descend(const char *subtree, uint64_t *ix, uint64_t *iy, size_t *n,
 	int depth = strlen(subtree), i;
 
 	if (strcmp(subtree, ".") == 0)
-		return 0;
-	if (depth > QT_MAXLEVEL || cell_frompath(subtree, depth, ix, iy) < 0)
+		depth = 0;
+	if (depth > QT_MAXLEVEL ||
+	    (depth > 0 && cell_frompath(subtree, depth, ix, iy) < 0))
 		die(2, "-r: not a cell path: %s", subtree);
-	for (i = 0; i < depth; i++) {
+	if (down.depth < 0) {
+		down.n[0] = split_root(in.sp, &down.inside[0]);
+		down.depth = 0;
+	}
+	for (i = 0; i < depth && i < down.depth && subtree[i] == down.path[i];
+	    i++)
+		;
+	*n = down.n[i];
+	*inside = down.inside[i];
+	memcpy(walk.path, subtree, i);
+	for (; i < depth; i++) {
 		int parity[4], q = subtree[i] - '0';
 
 		if (!splits(i, *n))
@@ -351,9 +377,12 @@ descend(const char *subtree, uint64_t *ix, uint64_t *iy, size_t *n,
 			parity[q] = *inside;
 		*n = *n > 0 ? split_child(in.sp, i, *n, q) : 0;
 		*inside = parity[q];
-		walk.path[i] = subtree[i];
+		walk.path[i] = down.path[i] = subtree[i];
+		down.n[i + 1] = *n;
+		down.inside[i + 1] = *inside;
 	}
 	walk.path[depth] = '\0';
+	down.depth = depth;
 	return depth;
 }
 
@@ -373,6 +402,8 @@ foretell(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
 
 	if (last > opt.deepest)
 		last = opt.deepest;
+	memset(census.cells, 0, sizeof(census.cells));
+	memset(census.partial, 0, sizeof(census.partial));
 	census.on = 1;
 	census.limit = last;
 	visit(level, ix, iy, n, inside);
@@ -401,18 +432,118 @@ foretell(int level, uint64_t ix, uint64_t iy, size_t n, int inside)
 		    bytes, last, growth);
 }
 
+/*
+ * -r's roots: cell paths in preorder, none inside another, so that their
+ * subtrees, one after another, come in preorder too.
+ */
+static void
+checkroots(void)
+{
+	struct cell a, b;
+	size_t k;
+	int la, lb;
+
+	for (k = 0; k < opt.nroots; k++) {
+		const char *p = opt.roots[k];
+
+		lb = strcmp(p, ".") == 0 ? 0 : (int)strlen(p);
+		if (lb > QT_MAXLEVEL ||
+		    (lb > 0 && cell_frompath(p, lb, &b.ix, &b.iy) < 0))
+			die(2, "-r: not a cell path: %s", p);
+		if (lb == 0)
+			b.ix = b.iy = 0;
+		b.level = lb;
+		if (k > 0 && (cell_cmp(&a, &b) >= 0 || (lb >= la &&
+		    b.ix >> (lb - la) == a.ix && b.iy >> (lb - la) == a.iy)))
+			die(2, "-r: %s %s %s: give the roots in preorder, "
+			    "none inside another", p, cell_cmp(&a, &b) >= 0 ?
+			    "comes before" : "lies inside", opt.roots[k - 1]);
+		a = b;
+		la = lb;
+	}
+}
+
+/*
+ * -o: the file of the root at path, its name the pattern with %s the
+ * path and %% a %; the standard output is reopened on it.
+ */
+static void
+openshard(const char *path)
+{
+	static char *name;
+	static size_t cap;
+	const char *p;
+	size_t n = 0, len;
+
+	for (p = opt.out; *p != '\0'; p++) {
+		const char *s = p;
+
+		len = 1;
+		if (*p == '%') {
+			s = *++p == 's' ? path : p;
+			len = *p == 's' ? strlen(path) : 1;
+		}
+		name = xgrow(name, &cap, n + len + 1, 1);
+		memcpy(name + n, s, len);
+		n += len;
+	}
+	name[n] = '\0';
+	if (fflush(stdout) == EOF || ferror(stdout))
+		die(1, "write error: %s", strerror(errno ? errno : EIO));
+	if (freopen(name, "w", stdout) == NULL)
+		die(1, "%s: %s", name, strerror(errno));
+}
+
+/* -o's pattern: %s for the root's path, %% for a %, no other %. */
+static void
+checkpattern(const char *pat)
+{
+	const char *p;
+	int paths = 0;
+
+	for (p = pat; *p != '\0'; p++)
+		if (*p == '%') {
+			p++;
+			if (*p != 's' && *p != '%')
+				die(2, "-o: %%%c: the pattern takes %%s (the "
+				    "root's path) and %%%% alone: %s",
+				    *p != '\0' ? *p : ' ', pat);
+			paths += *p == 's';
+		}
+	if (paths == 0)
+		die(2, "-o: no %%s in the pattern, so every root's file "
+		    "would be the same: %s", pat);
+}
+
+/* The subtree under the cell at path, written or listed as asked. */
+static void
+splitroot(const char *path)
+{
+	uint64_t ix = 0, iy = 0;
+	size_t n;
+	int inside, level;
+
+	level = descend(path, &ix, &iy, &n, &inside);
+	walk.root = level;
+	if (opt.cutopt != 0 && opt.cut < level)
+		die(2, "-%c %d is above the cell %s", opt.cutopt, opt.cut,
+		    path);
+	if (opt.verbose && opt.cutopt == 0)
+		foretell(level, ix, iy, n, inside);
+	visit(level, ix, iy, n, inside);
+}
+
 int
 main(int argc, char *argv[])
 {
 	struct qtreader *r;
-	const char *end, *subtree = ".";
+	const char *end;
 	long long val;
-	uint64_t ix = 0, iy = 0;
-	size_t n;
-	int ch, inside, level;
+	size_t k;
+	int ch;
 
 	xsetprogname(argv[0]);
-	while ((ch = getopt(argc, argv, "L:l:m:r:s:t:vh")) != -1)
+	while ((ch = getopt(argc, argv, "L:l:m:o:r:s:t:vh")) != -1)
 		switch (ch) {
 		case 'L':
 			addringlevel(optarg);
@@ -436,8 +567,14 @@ main(int argc, char *argv[])
 				opt.cutopt = ch;
 			}
 			break;
+		case 'o':
+			checkpattern(optarg);
+			opt.out = optarg;
+			break;
 		case 'r':
-			subtree = optarg;
+			opt.roots = xreallocarray(opt.roots, opt.nroots + 1,
+			    sizeof(*opt.roots));
+			opt.roots[opt.nroots++] = optarg;
 			break;
 		case 'v':
 			opt.verbose = 1;
@@ -447,35 +584,45 @@ main(int argc, char *argv[])
 		}
 	argc -= optind;
 	argv += optind;
-	if (argc > 1)
+	if (argc > 1 || (opt.out != NULL && opt.cutopt == 's'))
 		usage(0);
+	if (opt.nroots == 0) {
+		static const char *whole[] = { "." };
 
+		opt.roots = whole;
+		opt.nroots = 1;
+	}
 	r = qt_openpath(argc == 1 ? argv[0] : "-",
 	    QT_NEEDUNIVERSE | QT_ARCS | QT_SOLIDS);
 	if (readrings(r)) {
 		struct split3opts o = { opt.minlevel, opt.maxlevel, opt.cut,
-		    opt.cutopt, subtree, opt.verbose, opt.nrl };
+		    opt.cutopt, opt.roots[0], opt.verbose, opt.nrl };
 
+		if (opt.out != NULL)
+			die(2, "-o: 2D streams only");
+		if (opt.nroots > 1)
+			die(2, "-r: one root alone in a 3D stream");
 		return split3main(r, &o);
 	}
 	qt_close(r);
+	checkroots();
 	checklevels();
 	if (opt.minlevel > opt.maxlevel)
 		die(2, "-m %d is deeper than the maximum level %d",
 		    opt.minlevel, opt.maxlevel);
 	ringlevels();
-	if (opt.cutopt != 's')
+	if (opt.cutopt != 's' && opt.out == NULL)
 		writehead();
-	n = split_root(in.sp, &inside);
-	level = descend(subtree, &ix, &iy, &n, &inside);
-	walk.root = level;
-	if (opt.cutopt != 0 && opt.cut < level)
-		die(2, "-%c %d is above the cell %s", opt.cutopt, opt.cut,
-		    subtree);
-	if (opt.verbose && opt.cutopt == 0)
-		foretell(level, ix, iy, n, inside);
-	visit(level, ix, iy, n, inside);
-	if (opt.cutopt != 's')
+	for (k = 0; k < opt.nroots; k++) {
+		if (opt.out != NULL) {
+			openshard(opt.roots[k]);
+			writehead();
+		}
+		splitroot(opt.roots[k]);
+		if (opt.out != NULL)
+			qt_end();
+	}
+	if (opt.cutopt != 's' && opt.out == NULL)
 		qt_end();
 	report(1);
 	closeout();

@@ -53,8 +53,9 @@ struct nodeat {
 
 struct sums {
 	int		 on;
-	struct nodeat	 root, open;	/* the first cell, the last node */
-	int		 haveroot, haveopen;
+	struct nodeat	*roots, open;	/* the roots (below), the last node */
+	size_t		 nroots, rootcap;
+	int		 haveopen;
 	struct nodeat	*dangling;
 	size_t		 ndangling, cap;
 	/*

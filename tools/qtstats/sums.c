@@ -77,7 +77,23 @@ nodeat(struct nodeat *n, const struct cell *c)
 	n->class = c->class == 0 ? 'N' : c->class;
 }
 
-/* The last node dangles when cell c (NULL: none) is not inside it. */
+/* Whether cell c lies in the subtree of the last root. */
+static int
+inroot(const struct cell *c)
+{
+	const struct nodeat *r = &sums.roots[sums.nroots - 1];
+
+	return c->level > r->level && (r->level == 0 ||
+	    cell_pathprefix(c->path, c->level, r->path, r->level) ==
+	    r->level);
+}
+
+/*
+ * The roots: the first cell, and each node after it outside the last
+ * root's subtree (several shards' subtrees one after another, as
+ * qtsplit -r writes them when given several roots).  The last node
+ * dangles when cell c (NULL: none) is not inside it.
+ */
 void
 sumcell(const struct cell *c)
 {
@@ -95,9 +111,10 @@ sumcell(const struct cell *c)
 		decide(c);
 	if (c == NULL)
 		return;
-	if (!sums.haveroot) {
-		nodeat(&sums.root, c);
-		sums.haveroot = 1;
+	if (sums.nroots == 0 || (c->class == 0 && !inroot(c))) {
+		sums.roots = xgrow(sums.roots, &sums.rootcap, sums.nroots + 1,
+		    sizeof(*sums.roots));
+		nodeat(&sums.roots[sums.nroots++], c);
 	}
 	if (c->class == 0) {
 		nodeat(o, c);
@@ -165,8 +182,8 @@ sumsreport(const char *name)
 		putxsum("moment_x", &poly.region.mx);
 		putxsum("moment_y", &poly.region.my);
 	}
-	if (sums.haveroot)
-		putnodeat("root", &sums.root, 1);
+	for (i = 0; i < sums.nroots; i++)
+		putnodeat("root", &sums.roots[i], 1);
 	for (i = 0; i < sums.ndangling; i++)
 		putnodeat("dangling", &sums.dangling[i], 0);
 	for (l = 0; l <= tree.deepest; l++) {
