@@ -132,3 +132,14 @@ oracle() {
 	polyread -u -1.5,-1.25,-1,3 "$SOLIDS/octa.off" | qtsplit -l 3 > t.q3
 	"$TOP/tests/check/solidcat" t.q3 | diff -u t.q3 -
 }
+
+@test "a solid that lies strictly inside one child: the octrees are the oracle's" {
+	# the tetrahedron's box [0, 1]^3 lies strictly inside child 1 (x
+	# high, y and z low) of the root of -2.5,-0.5,-0.5,4, and inside
+	# child 2 (y high) of -0.5,-2.5,-0.5,4: its faces go down whole
+	oracle tetra.off "1 2 3" -2.5,-0.5,-0.5,4 -0.5,-2.5,-0.5,4
+	polyread -u -2.5,-0.5,-0.5,4 "$SOLIDS/tetra.off" | qtsplit -l 1 |
+	    awk '$1 == "leaf" { print $2, $11 }' > got
+	printf '%s\n' "0 E" "1 P" "2 E" "3 E" "4 E" "5 E" "6 E" "7 E" |
+	    diff -u - got
+}
