@@ -162,3 +162,19 @@ refuse() {
 		    { echo "got: $stderr"; return 1; }
 	done
 }
+
+@test "a cell's size must be its level's" {
+	refuse 's/^leaf 6 1 0 1 1 0 2 2 2 P$/leaf 6 1 0 1 1 0 2 2 3 P/' 32 \
+	    "cell 6 lies at 0 2 2 size 2 in this universe"
+}
+
+@test "shells are numbered 1, 2, ... in order: a number given twice is refused" {
+	# two copies of the cube's shell (lines 4 to 24), the second numbered 1
+	sed -n '1,24p' "$SOLIDS/cube-1.q3" > two.q3
+	sed -n '4,24p' "$SOLIDS/cube-1.q3" >> two.q3
+	echo "end 44" >> two.q3	# universe, level, 2 x (1 + 8 + 12)
+	sed '25s/^shell 1 /shell 2 /' two.q3 > ok.q3
+	run -0 "$SOLIDCAT" ok.q3
+	run -1 --separate-stderr "$SOLIDCAT" two.q3
+	[ "$stderr" = "solidcat: two.q3:25: shell 1 follows shell 1" ]
+}
