@@ -59,13 +59,13 @@ while IFS='	' read -r id file line files old new; do
 	    END { exit bad }' "$base/orig" > "$file"
 	if [ $? -ne 0 ]; then
 		result=stale
-	elif ! make -j2 testprogs > "$base/build.log" 2>&1; then
+	elif ! make -j2 testprogs > "$base/build.log" 2>&1 < /dev/null; then
 		result=nobuild
 	else
 		if [ $all = 1 ] || [ "$files" = all ]; then
 			# shellcheck disable=SC2046
 			if sh tests/run.sh $(ls -S tests/*.bats) \
-			    > "$base/$id.tap" 2>&1; then
+			    > "$base/$id.tap" 2>&1 < /dev/null; then
 				result=survived
 			else
 				result=caught
@@ -75,7 +75,8 @@ while IFS='	' read -r id file line files old new; do
 			result=survived
 			: > "$base/$id.tap"
 			for f in $files; do
-				bats "tests/$f.bats" >> "$base/$id.tap" 2>&1 ||
+				bats "tests/$f.bats" >> "$base/$id.tap" 2>&1 \
+				    < /dev/null ||
 					{ result="caught"; break; }
 			done
 		fi
