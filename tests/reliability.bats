@@ -380,3 +380,25 @@ longrecord() {
 		[ "$stderr" = "qtstats: big.qt:55: element id out of range 1 to $max: $id" ]
 	done
 }
+
+@test "a node given twice is refused, spelled as the writers spell it or not" {
+	# qtree(5): each cell follows the last in preorder, so none comes twice
+	for second in 'node 0 1 0 0 0 0 2' 'node 0 1 0 0 0.0 0 2'; do
+		printf 'qtree 1\nuniverse 0 0 4\nnode . 0 0 0 0 0 4\nnode 0 1 0 0 0 0 2\n%s\nend 4\n' \
+		    "$second" > twice.qt
+		run -1 --separate-stderr qtstats twice.qt
+		[ "$stderr" = "qtstats: twice.qt:5: cell 0 does not follow cell 0 in preorder" ] ||
+		    { echo "$second: $stderr"; return 1; }
+	done
+}
+
+@test "an empty leaf's area fraction must be 0, a full one's 1" {
+	# qtree(5): the fraction of an E leaf is 0, of an F leaf 1
+	printf 'qtree 1\nuniverse 0 0 4\nleaf . 0 0 0 0 0 4 E 1 0.5\nend 2\n' > e.qt
+	run -1 --separate-stderr qtstats e.qt
+	[ "$stderr" = "qtstats: e.qt:3: area fraction of an empty leaf is 0.5, not 0" ]
+	sed 's/ E 1 0.5$/ E 1 0/' e.qt > e0.qt
+	run -0 qtstats e0.qt
+	sed 's/ E 1 0.5$/ F 1 1/' e.qt > f1.qt
+	run -0 qtstats f1.qt
+}
