@@ -402,3 +402,22 @@ longrecord() {
 	sed 's/ E 1 0.5$/ F 1 1/' e.qt > f1.qt
 	run -0 qtstats f1.qt
 }
+
+@test "a cell's column and row fields must be its path's, each" {
+	# path 2 at level 1 is column 0, row 1 (qtree(5): digit = x + 2 y)
+	printf 'qtree 1\nuniverse 0 0 4\nnode . 0 0 0 0 0 4\nleaf 0 1 0 0 0 0 2 F\nleaf 1 1 1 0 2 0 2 F\nleaf 2 1 0 0 0 2 2 F\n' > r.qt
+	run -1 --separate-stderr qtstats r.qt
+	[ "$stderr" = "qtstats: r.qt:6: cell 2 is at column 0 row 1, not 0 0" ]
+}
+
+@test "integer fields past their range are refused as out of range" {
+	# a root has column 0 only; a quad has 4 vertices
+	printf 'qtree 1\nuniverse 0 0 4\nleaf . 0 7 0 0 0 4 F\nend 2\n' > ix.qt
+	run -1 --separate-stderr qtstats ix.qt
+	[ "$stderr" = "qtstats: ix.qt:3: ix out of range 0 to 0: 7" ]
+	printf 'qtree 1\nuniverse 0 0 4\nvertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nvertex 4 0 1\nvertex 5 0 2\nelem 1 quad 1 2 3 4 5\nend 7\n' > q.qt
+	run -1 --separate-stderr qtstats q.qt
+	[ "$stderr" = "qtstats: q.qt:8: quad element has 5 vertices, expected 4" ]
+	sed 's/^elem 1 quad 1 2 3 4 5$/elem 1 quad 1 2 3 4/' q.qt > q4.qt
+	run -0 qtstats q4.qt
+}
