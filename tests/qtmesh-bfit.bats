@@ -791,3 +791,13 @@ print(ring.get(("line", 1), 0), ring.get(("line", 2), 0), ring.get(("line", 0), 
 	    if (r - 0.25 > 1e-12 || 0.25 - r > 1e-12) bad++ }
 	    END { exit !(n >= 1 && bad == 0) }' m.qt
 }
+
+@test "a leaf that an arc's chords leave empty is dropped" {
+	# qtmesh(1): a leaf the chords leave empty is dropped.  The quarter
+	# disc's leaves at x < 0 (column 0 of level 3 in -1 0 8) lie left of
+	# its straight side x = 0: none of them is written, nor any E leaf
+	printf 'qtree 1\nuniverse -1 0 8\nring 1 outer 4\nv 5 0\na 4 3\nv 0 5\nv 0 0\nend 6\n' > q.qt
+	qtsplit -l 5 q.qt | qtbalance | qtmesh -b > m.qt
+	grep -q '^leaf ' m.qt
+	! awk '$1 == "leaf" && ($9 == "E" || $6 < 0)' m.qt | grep -q .
+}
