@@ -35,6 +35,9 @@ mkdir -p "$work" || exit 2
     while read -r f; do [ -f "$f" ] && printf '%s\n' "$f"; done |
     tar cf - -T -) | (cd "$work" && tar xf -) || exit 2
 cd "$work" || exit 2
+# a repository of its own, for the tests that ask git which files there are
+git init -q && git add -A && git -c user.name=mutate -c user.email=mutate@localhost \
+    commit -qm scratch || exit 2
 make -j2 testprogs > "$base/build.log" 2>&1 || {
 	echo "mutate-outsider.sh: the clean tree does not build" >&2
 	exit 2
