@@ -90,7 +90,8 @@ tools/qtbool.o: $(QTREEH)
 # fmtbench times it; numcheck checks parsereal against strtod, numbench
 # times both (tools/bench/benchnum.sh).  genpow5 writes lib/pow5.c, which is
 # committed (tests/lib-numbers.bats compares).  rangecheck checks qtree(5)'s
-# range rule; predcheck prints incircle's and orient2d's signs.
+# range rule; predcheck prints incircle's and orient2d's signs, orient3check
+# orient3d's.
 tests/check/fmtcheck: tests/check/fmtcheck.c tests/check/splitmix.h lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/fmtcheck.c lib/libqtree.a $(LDLIBS)
 tools/bench/fmtbench: tools/bench/fmtbench.c tests/check/splitmix.h lib/libqtree.a
@@ -109,10 +110,12 @@ tests/check/predcheck: tests/check/predcheck.c lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/predcheck.c lib/libqtree.a $(LDLIBS)
 tests/check/solidcat: tests/check/solidcat.c lib/libqtree.a
 	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/solidcat.c lib/libqtree.a $(LDLIBS)
+tests/check/orient3check: tests/check/orient3check.c lib/libqtree.a
+	$(CC) $(QTCFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/check/orient3check.c lib/libqtree.a $(LDLIBS)
 
 # What the suite runs beyond the programs; tests/mutate.sh builds it too.
 testprogs: all tests/check/fmtcheck tests/check/numcheck tools/gen/genpow5 tests/check/rangecheck \
-	tests/check/predcheck tests/check/solidcat
+	tests/check/predcheck tests/check/solidcat tests/check/orient3check
 
 # What the suite needs from Debian: make deps installs it all; make test
 # stops at once, naming the apt-get line, when bats or mandoc is missing.
@@ -218,7 +221,8 @@ uninstall:
 clean:
 	rm -f $(BIN) lib/*.o lib/libqtree.a tools/*.o tests/check/fmtcheck \
 	    tools/bench/fmtbench tests/check/numcheck tools/bench/numbench tools/gen/genpow5 \
-	    tests/check/rangecheck tests/check/predcheck \
+	    tests/check/rangecheck tests/check/predcheck tests/check/solidcat \
+	    tests/check/orient3check \
 	    tests/fuzz/polyread tests/fuzz/qtsplit tests/fuzz/qtstats \
 	    tests/fuzz/qtleaves tests/fuzz/qtbalance tests/fuzz/qtmesh tests/fuzz/qtcat \
 	    tests/fuzz/qt2svg tests/fuzz/qtbool tests/fuzz/persist.o

@@ -70,3 +70,51 @@ load test_helper
 	    sys.exit(1)
 	PY
 }
+
+@test "orient3d agrees with exact rationals, on near-coplanar points most" {
+	# the sign of ((b - a) x (c - a)) . (d - a), positive on the side the
+	# normal points to (lib/solid.c); d put on the plane of a, b, c in
+	# floating point lies off it by rounding, where the filter cannot
+	# decide and the exact sum must
+	python3 - "$TOP/tests/check/orient3check" <<-'PY'
+	import random, subprocess, sys
+	from fractions import Fraction as F
+	def orient3(p):
+	    a, b, c, d = [tuple(map(F, p[i:i + 3])) for i in (0, 3, 6, 9)]
+	    u = [b[i] - a[i] for i in range(3)]
+	    v = [c[i] - a[i] for i in range(3)]
+	    w = [d[i] - a[i] for i in range(3)]
+	    n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+	         u[0] * v[1] - u[1] * v[0])
+	    s = n[0] * w[0] + n[1] * w[1] + n[2] * w[2]
+	    return (s > 0) - (s < 0)
+	random.seed(11)
+	cases = []
+	for i in range(4000):
+	    k = i % 4
+	    s = random.choice([1, 1e-9, 3.7e20, 0.1])
+	    pts = [[random.uniform(-1, 1) * s for _ in range(3)] for _ in range(3)]
+	    if k == 0:
+	        d = [random.uniform(-1, 1) * s for _ in range(3)]
+	    elif k == 3:
+	        # a grid: exactly coplanar often, z = x + y
+	        pts = [[x * s, y * s, (x + y) * s] for x, y in
+	               [(random.randint(-3, 3), random.randint(-3, 3)) for _ in range(3)]]
+	        x, y = random.randint(-3, 3), random.randint(-3, 3)
+	        d = [x * s, y * s, (x + y + random.choice([0, 0, 1])) * s]
+	    else:
+	        t, r = random.uniform(-2, 2), random.uniform(-2, 2)
+	        a, b, c = pts
+	        d = [a[j] + t * (b[j] - a[j]) + r * (c[j] - a[j]) for j in range(3)]
+	    cases.append(pts[0] + pts[1] + pts[2] + d)
+	text = "".join(" ".join(repr(x) for x in p) + "\n" for p in cases)
+	out = subprocess.run([sys.argv[1]], input=text, capture_output=True,
+	                     text=True, check=True).stdout.split()
+	assert len(out) == len(cases), len(out)
+	bad = [(p, o) for p, o in zip(cases, out) if int(o) != orient3(p)]
+	assert not bad, bad[:3]
+	zeros = sum(orient3(p) == 0 for p in cases)
+	near = sum(1 for i, p in enumerate(cases) if i % 4 in (1, 2) and orient3(p) != 0)
+	assert zeros > 100 and near > 1000, (zeros, near)
+	PY
+}

@@ -276,3 +276,41 @@ lprism() {
 	awk '$1 == "shell" { print $4, $5 }' m.q3 > got
 	echo "9 14" | diff -u - got
 }
+
+@test "a face whose first and last corners are one point is refused" {
+	printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 0\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > t.off
+	run -1 --separate-stderr polyread t.off
+	[ "$stderr" = "polyread: t.off:7: face 1 has two corners at one point" ]
+}
+
+@test "-u that leaves a vertex below z0 is refused" {
+	# the tetrahedron's vertices have z = 0 or 1; z0 = 0.5 leaves out the
+	# three at z = 0, the first of them in the order of x, y, z (0 0 0)
+	run -1 --separate-stderr polyread -u -1,-1,0.5,4 "$SOLIDS/tetra.off"
+	[ "$output" = "" ]
+	[[ "$stderr" == "polyread: "*"vertex (0 0 0) lies outside the universe given with -u" ]]
+	run -0 polyread -u -1,-1,0,4 "$SOLIDS/tetra.off"
+}
+
+@test "a tetrahedron whose vertex touches a cube's face inside it is refused" {
+	# the cube [0, 2]^3 (cube.off doubled) and the tetrahedron (0, 0, 0)
+	# (1, 0, 0) (0, 1, 0) (0, 0, 1) taken by (x, y, z) -> (0.6 + x/2,
+	# 1 + y/2, 2 + (x + y + z)/2), of determinant 1/8 > 0: its first
+	# vertex is (0.6, 1, 2), inside the cube's top face (off its diagonal
+	# (0 0 2) (2 2 2)), its others lie above z = 2; they share no vertex
+	{
+		echo OFF
+		echo "12 16 0"
+		sed -n '3,10p' "$SOLIDS/cube.off" | awk '{ print 2 * $1, 2 * $2, 2 * $3 }'
+		sed -n '/^0 0 0$/,/^0 0 1$/p' "$SOLIDS/tetra.off" |
+		    awk '{ print 0.6 + $1 / 2, 1 + $2 / 2, 2 + ($1 + $2 + $3) / 2 }'
+		sed -n '11,22p' "$SOLIDS/cube.off"
+		awk '$1 == 3 && NR > 6 { print 3, $2 + 8, $3 + 8, $4 + 8 }' "$SOLIDS/tetra.off"
+	} > t.off
+	[ "$(wc -l < t.off)" -eq 30 ]
+	run -1 --separate-stderr polyread t.off
+	[[ "$stderr" == "polyread: t.off:"*": faces "*" and "*" intersect: the surface crosses or touches itself" ]]
+	# apart by 1/2 in z, the two are a valid solid of two shells
+	awk 'NR >= 11 && NR <= 14 { $3 += 0.5 } { print }' t.off > apart.off
+	run -0 polyread apart.off
+}

@@ -459,3 +459,50 @@ midleaf() {
 	run -1 --separate-stderr qtcat $d/amoeba-topfe-2.qt ??.qt
 	[ "$stderr" = "$want" ]
 }
+
+@test "a shard file with a hole is read cell by cell, and the hole is named" {
+	# the amoeba at level 2: the root, nodes 0 to 3, each with 4 leaves.
+	# f.qt is shard 3 less leaves 31 and 33, sealed again; g.qt the leaf
+	# 33 alone.  f.qt's last cell, 32, does not end its subtree, so it
+	# cannot be copied whole: read, it shows 31 missing before 32
+	polyread "$SAMPLES/amoeba.brep" > p.qt
+	qtsplit -l 2 -t 1 p.qt > top.qt
+	for r in 0 1 2; do qtsplit -l 2 -r $r p.qt > s$r.qt; done
+	qtsplit -l 2 -r 3 p.qt | grep -v -e '^leaf 31 ' -e '^leaf 33 ' |
+	    awk '$1 == "end" { print "end", $2 - 2; next } { print }' > f.qt
+	qtsplit -l 2 -r 33 p.qt > g.qt
+	l30=$(grep -n '^leaf 30 ' f.qt | cut -d: -f1)
+	l32=$(grep -n '^leaf 32 ' f.qt | cut -d: -f1)
+	run -1 --separate-stderr qtcat top.qt s0.qt s1.qt s2.qt f.qt g.qt
+	[ "$stderr" = "qtcat: f.qt:$l32: cell 31 is missing: cell 32 comes after cell 30 (f.qt:$l30)" ]
+}
+
+@test "a cell given in a shard file and in an earlier input: the later one is refused" {
+	# ties in the merge go to the earlier input (qtcat.c's heap), so g.qt's
+	# leaf 33 comes first and s3.qt's, read cell by cell, is the second
+	polyread "$SAMPLES/amoeba.brep" > p.qt
+	qtsplit -l 2 -t 1 p.qt > top.qt
+	for r in 0 1 2 3; do qtsplit -l 2 -r $r p.qt > s$r.qt; done
+	qtsplit -l 2 -r 33 p.qt > g.qt
+	n=$(grep -n '^leaf 33 ' s3.qt | cut -d: -f1)
+	m=$(grep -n '^leaf 33 ' g.qt | cut -d: -f1)
+	run -1 --separate-stderr qtcat top.qt s0.qt s1.qt s2.qt g.qt s3.qt
+	[ "$stderr" = "qtcat: s3.qt:$n: cell 33 given twice: also at g.qt:$m" ]
+}
+
+@test "leaves with area fraction 0 and 1 keep them through every way of reading" {
+	# qtree(5): an E leaf's fraction is 0, an F leaf's 1
+	cat > s.qt <<-'EOF'
+	qtree 1
+	universe 0 0 4
+	node . 0 0 0 0 0 4
+	leaf 0 1 0 0 0 0 2 E 1 0
+	leaf 1 1 1 0 2 0 2 F 2 1
+	leaf 2 1 0 1 0 2 2 E 3 0
+	leaf 3 1 1 1 2 2 2 F 4 1
+	end 6
+	EOF
+	qtcat < s.qt | diff -u s.qt -
+	qtcat -c s.qt | diff -u s.qt -
+	qtcat -u s.qt | diff -u s.qt -
+}

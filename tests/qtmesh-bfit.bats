@@ -767,3 +767,37 @@ print(ring.get(("line", 1), 0), ring.get(("line", 2), 0), ring.get(("line", 0), 
 	[ "$1" -gt 0 ] && [ "$2" -eq "$4" ] && [ "$3" -eq 24 ] && [ "$5" -eq 24 ]
 	[ "$6" = 32 ] && [ "$7" = 11.2 ]
 }
+
+@test "an arc of a quarter circle is chorded along itself, not its complement" {
+	# the quarter disc of radius 5 (the arc (5, 0) (4, 3) (0, 5), then
+	# straight edges by (0, 0)): its area is 25 pi / 4, and the chords,
+	# inside the circle, take a little off it
+	printf 'qtree 1\nuniverse -1 0 8\nring 1 outer 4\nv 5 0\na 4 3\nv 0 5\nv 0 0\nend 6\n' > q.qt
+	qtsplit -l 5 q.qt | qtbalance | qtmesh -b > m.qt
+	python3 "$TOP/tests/oracle/meshangles.py" -c m.qt
+	awk -v a="$(awk "$meshed" m.qt)" 'BEGIN { t = 25 * atan2(0, -1) / 4
+	    exit !(a < t && a > t * 0.999) }'
+}
+
+@test "an arc within one leaf still gets a vertex on it between its ends" {
+	# the square [0, 4]^2 with its side x = 4 bulging out between y = 1.1
+	# and 1.4 by the arc through (4.05, 1.25): radius 0.25 about
+	# (3.8, 1.25), a length of about 0.33, inside the leaf [4, 5] x [1, 2]
+	# of level 3 and crossing none of its lines.  Two chords at least:
+	# a vertex with x > 4, on the circle
+	printf 'qtree 1\nuniverse 0 0 8\nring 1 outer 7\nv 0 0\nv 4 0\nv 4 1.1\na 4.05 1.25\nv 4 1.4\nv 4 4\nv 0 4\nend 9\n' > b.qt
+	qtsplit -l 3 b.qt | qtbalance | qtmesh -b > m.qt
+	awk '$1 == "vertex" && $3 > 4 { n++; r = sqrt(($3 - 3.8) ^ 2 + ($4 - 1.25) ^ 2)
+	    if (r - 0.25 > 1e-12 || 0.25 - r > 1e-12) bad++ }
+	    END { exit !(n >= 1 && bad == 0) }' m.qt
+}
+
+@test "a leaf that an arc's chords leave empty is dropped" {
+	# qtmesh(1): a leaf the chords leave empty is dropped.  The quarter
+	# disc's leaves at x < 0 (column 0 of level 3 in -1 0 8) lie left of
+	# its straight side x = 0: none of them is written, nor any E leaf
+	printf 'qtree 1\nuniverse -1 0 8\nring 1 outer 4\nv 5 0\na 4 3\nv 0 5\nv 0 0\nend 6\n' > q.qt
+	qtsplit -l 5 q.qt | qtbalance | qtmesh -b > m.qt
+	grep -q '^leaf ' m.qt
+	! awk '$1 == "leaf" && ($9 == "E" || $6 < 0)' m.qt | grep -q .
+}

@@ -351,3 +351,19 @@ print("%.14g" % (3 * math.pi))' > want
 		    diff -u want -
 	done
 }
+
+@test "a cell whose corner alone lies on the arc, the chord crossing it, is full" {
+	# the quarter disc of radius 5: the arc (5, 0) (4, 3) (0, 5), then
+	# straight edges by (0, 0).  The cell [1, 3] x [2, 4] (03 at level 2
+	# of -1 0 8) meets the circle only at its corner (3, 4), 9 + 16 = 25;
+	# every other point of it has x^2 + y^2 < 25 and x, y > 0: full,
+	# though the chord x + y = 5 crosses it
+	printf 'qtree 1\nuniverse -1 0 8\nring 1 outer 4\nv 5 0\na 4 3\nv 0 5\nv 0 0\nend 6\n' > q.qt
+	qtsplit -l 2 q.qt | awk '$1 == "leaf" && $2 == "03" { print $9 }' > got
+	echo F | diff -u - got
+	for l in 2 3 4; do
+		python3 "$TOP/tests/oracle/arcclass.py" $l q.qt > want
+		qtsplit -l $l q.qt | awk '$1 == "node" { print $1, $2, $3, $4, $5 }
+		    $1 == "leaf" { print $1, $2, $3, $4, $5, $9 }' | diff -u want -
+	done
+}

@@ -173,3 +173,39 @@ pathto() {
 		grep -q "^leaf [0-7]* 50 .* P$" want
 	done
 }
+
+@test "a solid that lies strictly inside one child: the octrees are the oracle's" {
+	# the tetrahedron's box [0, 1]^3 lies strictly inside child 1 (x
+	# high, y and z low) of the root of -2.5,-0.5,-0.5,4, and inside
+	# child 2 (y high) of -0.5,-2.5,-0.5,4: its faces go down whole
+	oracle tetra.off "1 2 3" -2.5,-0.5,-0.5,4 -0.5,-2.5,-0.5,4
+	polyread -u -2.5,-0.5,-0.5,4 "$SOLIDS/tetra.off" | qtsplit -l 1 |
+	    awk '$1 == "leaf" { print $2, $11 }' > got
+	printf '%s\n' "0 E" "1 P" "2 E" "3 E" "4 E" "5 E" "6 E" "7 E" |
+	    diff -u - got
+}
+
+@test "-s and -t at the level of -r's cell cut there, and above it are refused" {
+	sed '/^node/,$d' "$SOLIDS/cube-1.q3" > c.q3
+	echo "end 23" >> c.q3
+	# at level 2 the cell 0 (level 1) is partial, so split: the one root
+	# of its subtree cut at its own level is itself
+	run -0 qtsplit -l 2 -r 0 -s 1 c.q3
+	[ "$output" = "0" ]
+	run -0 --separate-stderr qtsplit -l 2 -r 0 -t 1 c.q3
+	[ "$(echo "$output" | grep -c -E '^(node|leaf)')" -eq 1 ]
+	echo "$output" | grep -qx 'node 0 1 0 0 0 0 0 0 2'
+	run -2 --separate-stderr qtsplit -l 2 -r 0 -s 0 c.q3
+	[ "$stderr" = "qtsplit: -s 0 is above the cell 0" ]
+}
+
+@test "with no level record and no -l, the octree goes to level 6" {
+	# qtsplit(1): the stream's level record, else 6 (the universe's
+	# deepest is far below)
+	polyread "$SOLIDS/tetra.off" > t.q3
+	! grep -q '^level' t.q3
+	qtsplit t.q3 > out.q3
+	grep -x 'level 6' out.q3
+	awk '$1 == "leaf" || $1 == "node" { if ($3 > m) m = $3 } END { print m }' out.q3 > got
+	echo 6 | diff -u - got
+}

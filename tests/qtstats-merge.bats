@@ -203,3 +203,16 @@ merges() {
 	qtsplit -l 16 p.qt | qtstats |
 	    grep -E '^(leaves|area_full) ' | diff - want.txt
 }
+
+@test "sums past 2^64 carry when merged: a star at level 50 near the universe's far corner" {
+	# the star, of radius about 2^-38, at (1 - 2^-36, 1 - 2^-36) in the
+	# universe 0 0 1: its cells at level 50 have 2 IX + 1 near 2^51, and
+	# some 40000 of them sum past 2^64 (qtstats -s shows the high words),
+	# so adding the shards' low words must carry
+	awk -v shape=star -v n=400 -v m=8 -f "$TOP/tools/gen/genpoly.awk" |
+	    awk 'NF == 2 { printf "%.17g %.17g\n", 1 - 2^-36 + $1 * 2^-38,
+		1 - 2^-36 + $2 * 2^-38; next } { print }' | polyread -u 0,0,1 > p.qt
+	qtsplit -l 50 p.qt | qtstats -s | awk '$1 == "level" && $2 == 50 && $17 >= 2 { n++ } END { exit n != 1 }'
+	[ "$(qtsplit -l 50 -s 40 p.qt | wc -l)" -gt 10 ]
+	merges p.qt 50 40
+}

@@ -380,3 +380,44 @@ longrecord() {
 		[ "$stderr" = "qtstats: big.qt:55: element id out of range 1 to $max: $id" ]
 	done
 }
+
+@test "a node given twice is refused, spelled as the writers spell it or not" {
+	# qtree(5): each cell follows the last in preorder, so none comes twice
+	for second in 'node 0 1 0 0 0 0 2' 'node 0 1 0 0 0.0 0 2'; do
+		printf 'qtree 1\nuniverse 0 0 4\nnode . 0 0 0 0 0 4\nnode 0 1 0 0 0 0 2\n%s\nend 4\n' \
+		    "$second" > twice.qt
+		run -1 --separate-stderr qtstats twice.qt
+		[ "$stderr" = "qtstats: twice.qt:5: cell 0 does not follow cell 0 in preorder" ] ||
+		    { echo "$second: $stderr"; return 1; }
+	done
+}
+
+@test "an empty leaf's area fraction must be 0, a full one's 1" {
+	# qtree(5): the fraction of an E leaf is 0, of an F leaf 1
+	printf 'qtree 1\nuniverse 0 0 4\nleaf . 0 0 0 0 0 4 E 1 0.5\nend 2\n' > e.qt
+	run -1 --separate-stderr qtstats e.qt
+	[ "$stderr" = "qtstats: e.qt:3: area fraction of an empty leaf is 0.5, not 0" ]
+	sed 's/ E 1 0.5$/ E 1 0/' e.qt > e0.qt
+	run -0 qtstats e0.qt
+	sed 's/ E 1 0.5$/ F 1 1/' e.qt > f1.qt
+	run -0 qtstats f1.qt
+}
+
+@test "a cell's column and row fields must be its path's, each" {
+	# path 2 at level 1 is column 0, row 1 (qtree(5): digit = x + 2 y)
+	printf 'qtree 1\nuniverse 0 0 4\nnode . 0 0 0 0 0 4\nleaf 0 1 0 0 0 0 2 F\nleaf 1 1 1 0 2 0 2 F\nleaf 2 1 0 0 0 2 2 F\n' > r.qt
+	run -1 --separate-stderr qtstats r.qt
+	[ "$stderr" = "qtstats: r.qt:6: cell 2 is at column 0 row 1, not 0 0" ]
+}
+
+@test "integer fields past their range are refused as out of range" {
+	# a root has column 0 only; a quad has 4 vertices
+	printf 'qtree 1\nuniverse 0 0 4\nleaf . 0 7 0 0 0 4 F\nend 2\n' > ix.qt
+	run -1 --separate-stderr qtstats ix.qt
+	[ "$stderr" = "qtstats: ix.qt:3: ix out of range 0 to 0: 7" ]
+	printf 'qtree 1\nuniverse 0 0 4\nvertex 1 0 0\nvertex 2 1 0\nvertex 3 1 1\nvertex 4 0 1\nvertex 5 0 2\nelem 1 quad 1 2 3 4 5\nend 7\n' > q.qt
+	run -1 --separate-stderr qtstats q.qt
+	[ "$stderr" = "qtstats: q.qt:8: quad element has 5 vertices, expected 4" ]
+	sed 's/^elem 1 quad 1 2 3 4 5$/elem 1 quad 1 2 3 4/' q.qt > q4.qt
+	run -0 qtstats q4.qt
+}

@@ -129,3 +129,52 @@ refuse() {
 	run -1 --separate-stderr "$SOLIDCAT" z.q3
 	[ "$stderr" = "solidcat: z.q3:2: universe 0 0 1e+100 1e+100 is outside the supported range: its z0 + size, 2e+100, lies past 1e100" ]
 }
+
+@test "a leaf class of two letters is refused" {
+	# qtree(5): CLASS is one letter, F, E or P
+	refuse 's/^leaf 7 1 1 1 1 2 2 2 2 P$/leaf 7 1 1 1 1 2 2 2 2 PP/' 33 \
+	    "leaf class is not F, E or P: PP"
+}
+
+@test "a node given twice is refused" {
+	# preorder: a cell follows the last one strictly (qtree(5))
+	refuse '25p' 26 "cell . does not follow cell . in preorder"
+}
+
+@test "a shell of fewer than 4 faces or 4 vertices is refused" {
+	# a closed surface of triangles has at least 4 of each (the tetrahedron)
+	refuse 's/^shell 1 outer 8 12$/shell 1 outer 8 3/' 4 \
+	    "face count out of range 4 to 1099511627776: 3"
+	refuse 's/^shell 1 outer 8 12$/shell 1 outer 3 12/' 4 \
+	    "vertex count out of range 4 to 1099511627776: 3"
+}
+
+@test "a 3D universe takes its deepest level and refuses the next, on each axis" {
+	# 100000 and 100001 lie in [2^16, 2^17), where doubles are 2^-36
+	# apart: cells of side 2^-36 are the finest (tests/lib-range.bats
+	# works the same universe out in 2D), whether x0 or z0 is 100000
+	for u in '100000 0 0 1' '0 0 100000 1'; do
+		printf 'qtree 1 3\nuniverse %s\nlevel 36\nend 2\n' "$u" > u.q3
+		run -0 "$SOLIDCAT" u.q3
+		sed 's/^level 36$/level 37/' u.q3 > v.q3
+		run -1 --separate-stderr "$SOLIDCAT" v.q3
+		[ "${stderr#"solidcat: v.q3:3: level 37 is past the deepest level 36 of universe $u"}" != "$stderr" ] ||
+		    { echo "got: $stderr"; return 1; }
+	done
+}
+
+@test "a cell's size must be its level's" {
+	refuse 's/^leaf 6 1 0 1 1 0 2 2 2 P$/leaf 6 1 0 1 1 0 2 2 3 P/' 32 \
+	    "cell 6 lies at 0 2 2 size 2 in this universe"
+}
+
+@test "shells are numbered 1, 2, ... in order: a number given twice is refused" {
+	# two copies of the cube's shell (lines 4 to 24), the second numbered 1
+	sed -n '1,24p' "$SOLIDS/cube-1.q3" > two.q3
+	sed -n '4,24p' "$SOLIDS/cube-1.q3" >> two.q3
+	echo "end 44" >> two.q3	# universe, level, 2 x (1 + 8 + 12)
+	sed '25s/^shell 1 /shell 2 /' two.q3 > ok.q3
+	run -0 "$SOLIDCAT" ok.q3
+	run -1 --separate-stderr "$SOLIDCAT" two.q3
+	[ "$stderr" = "solidcat: two.q3:25: shell 1 follows shell 1" ]
+}
