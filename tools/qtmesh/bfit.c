@@ -156,6 +156,16 @@ addllen(struct bfit *b, size_t n)
 static void
 addlinept(struct linept **a, size_t *n, size_t *cap, double line, double pos)
 {
+	size_t k;
+
+	/*
+	 * A corner shared by neighbours comes again soon after in preorder;
+	 * those the last few hold are not added twice (sortline would drop
+	 * them, after sorting them).
+	 */
+	for (k = *n > 6 ? *n - 6 : 0; k < *n; k++)
+		if ((*a)[k].line == line && (*a)[k].pos == pos)
+			return;
 	*a = xgrow(*a, cap, *n + 1, sizeof(**a));
 	(*a)[*n].line = line + 0.0;
 	(*a)[(*n)++].pos = pos + 0.0;
@@ -207,6 +217,29 @@ sortline(struct linept *a, size_t *n)
 			a[w++] = src[i];
 	*n = w;
 	free(tmp);
+}
+
+/*
+ * The same, for an index whose points moved each by a few ulps only (to a
+ * grid corner): nothing passes more than the few points as close, and an
+ * insertion sort moves each that far.
+ */
+static void
+resortline(struct linept *a, size_t *n)
+{
+	struct linept key;
+	size_t i, j, w;
+
+	for (i = 1; i < *n; i++) {
+		key = a[i];
+		for (j = i; j > 0 && lineless(&key, &a[j - 1]); j--)
+			a[j] = a[j - 1];
+		a[j] = key;
+	}
+	for (i = 0, w = 0; i < *n; i++)
+		if (w == 0 || lineless(&a[w - 1], &a[i]))
+			a[w++] = a[i];
+	*n = w;
 }
 
 /* The loops of leaf l, checked against the rings, into lpts. */
@@ -333,7 +366,7 @@ snaplines(struct bfit *b, int vertical)
 		moved = 1;
 	}
 	if (moved)
-		sortline(a, &n);
+		resortline(a, &n);
 	if (vertical)
 		b->nvline = n;
 	else
