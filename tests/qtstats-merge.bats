@@ -82,6 +82,19 @@ merges() {
 	qtstats -m -l sums.txt | cmp - want.txt
 }
 
+@test "a shard's root given again alone (qtsplit -r R -t at R's level) counts once, before or after the shards" {
+	polyread "$SAMPLES/amoeba.brep" > p.qt
+	qtsplit -l 8 -t 3 p.qt | qtstats -s > top.txt
+	for r in $(qtsplit -l 8 -s 3 p.qt); do
+		qtsplit -l 8 -r "$r" p.qt | qtstats -s; done > shards.txt
+	qtsplit -l 8 -r 001 -t 3 p.qt | qtstats -s > alone.txt
+	# as qtcat joins the same inputs: the single run
+	whole p.qt 8 -l > want.txt
+	cat top.txt shards.txt alone.txt | qtstats -m -l | cmp - want.txt
+	cat top.txt alone.txt shards.txt | qtstats -m -l | cmp - want.txt
+	cat alone.txt top.txt shards.txt | qtstats -m -l | cmp - want.txt
+}
+
 @test "area_cut merges: qtleaves -a of the top and of each shard" {
 	polyread "$SAMPLES/amoeba.brep" > p.qt
 	{ qtsplit -l 8 -t 2 p.qt | qtleaves -a | qtstats -s

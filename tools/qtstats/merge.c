@@ -391,6 +391,19 @@ claimpath(const struct claim *c)
 	return c->n.level > 0 ? c->n.path : ".";
 }
 
+/* Root r's node, counted by two inputs, taken out of the figures once. */
+static void
+uncount(const struct claim *r)
+{
+	struct levelstat *s = &tree.lev[r->n.level];
+
+	s->nodes--;
+	add128(&s->nodesx, -(2 * r->n.ix + 1));
+	s->nodesx.hi--;
+	add128(&s->nodesy, -(2 * r->n.iy + 1));
+	s->nodesy.hi--;
+}
+
 /*
  * The partials join: a node with no cell below it in its partial (the
  * top of a cut ends in such nodes) has its cells in another partial, of
@@ -402,7 +415,6 @@ void
 mergejoin(const char *name)
 {
 	struct claim *r, *d, *e;
-	struct levelstat *s;
 	size_t i, j;
 
 	if (mg.partials == 0)
@@ -416,22 +428,33 @@ mergejoin(const char *name)
 		qsort(mg.dangling, mg.ndangling, sizeof(*mg.dangling),
 		    claimcmp);
 	for (i = 0; i < mg.nroots; i++) {
+		int alone = 0, took = 0;
+
 		r = &mg.roots[i];
 		j = lowerbound(mg.dangling, mg.ndangling, r);
 		for (; j < mg.ndangling && samecell(d = &mg.dangling[j], r);
 		    j++)
 			if (d->part == r->part)
-				r->claimed = 1;		/* a node alone */
-			else if (r->n.class == 'N' && d->claimed == 0) {
+				alone = 1;	/* a node alone */
+			else if (!took && r->n.class == 'N' &&
+			    d->claimed == 0) {
 				d->claimed = 1;
-				s = &tree.lev[r->n.level];
-				s->nodes--;
-				add128(&s->nodesx, -(2 * r->n.ix + 1));
-				s->nodesx.hi--;
-				add128(&s->nodesy, -(2 * r->n.iy + 1));
-				s->nodesy.hi--;
-				break;
+				uncount(r);
+				took = 1;
 			}
+		if (!alone)
+			continue;
+		r->claimed = 1;
+		/* another input's root too, which took no node for it: once */
+		if (!took && ((i > 0 && samecell(&mg.roots[i - 1], r)) ||
+		    (i + 1 < mg.nroots && samecell(&mg.roots[i + 1], r)))) {
+			j = lowerbound(mg.dangling, mg.ndangling, r);
+			for (; j < mg.ndangling &&
+			    samecell(d = &mg.dangling[j], r); j++)
+				if (d->part == r->part)
+					d->claimed = 1;
+			uncount(r);
+		}
 	}
 	for (i = 0; i + 1 < mg.nroots; i++)
 		if (samecell(r = &mg.roots[i], e = &mg.roots[i + 1]) &&
