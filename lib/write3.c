@@ -88,12 +88,11 @@ static const struct text3 *
 text3(const struct universe3 *u, int level, int axis, uint64_t i)
 {
 	struct text3 *t = &cache3.t[level][axis][i % NTEXT3];
-	double o = axis == 0 ? u->x0 : axis == 1 ? u->y0 : 0;
+	double o = axis == 0 ? u->x0 : axis == 1 ? u->y0 : axis == 2 ? u->z0 :
+	    0;
 
 	if (t->key == i + 1)
 		return t;
-	if (axis == 2)
-		o = u->z0;
 	t->key = i + 1;
 	t->ilen = fmtint(t->itext, (long long)i) - t->itext;
 	t->len = fmtreal(t->text, cell_coord(o, u->size, level, i)) - t->text;

@@ -177,6 +177,18 @@ lineless(const struct linept *a, const struct linept *b)
 	return a->line < b->line || (a->line == b->line && a->pos < b->pos);
 }
 
+/* The n sorted points of src into a (src itself, or apart), each once. */
+static void
+uniqline(struct linept *a, const struct linept *src, size_t *n)
+{
+	size_t i, w;
+
+	for (i = 0, w = 0; i < *n; i++)
+		if (w == 0 || lineless(&a[w - 1], &src[i]))
+			a[w++] = src[i];
+	*n = w;
+}
+
 /*
  * Sorted by line, then position, and each point once.  A merge sort of
  * its own: the index holds every leaf's corners, and qsort's calls of a
@@ -212,10 +224,7 @@ sortline(struct linept *a, size_t *n)
 		}
 		swap = src, src = dst, dst = swap;
 	}
-	for (i = 0, w = 0; i < *n; i++)
-		if (w == 0 || lineless(&a[w - 1], &src[i]))
-			a[w++] = src[i];
-	*n = w;
+	uniqline(a, src, n);
 	free(tmp);
 }
 
@@ -228,7 +237,7 @@ static void
 resortline(struct linept *a, size_t *n)
 {
 	struct linept key;
-	size_t i, j, w;
+	size_t i, j;
 
 	for (i = 1; i < *n; i++) {
 		key = a[i];
@@ -236,10 +245,7 @@ resortline(struct linept *a, size_t *n)
 			a[j] = a[j - 1];
 		a[j] = key;
 	}
-	for (i = 0, w = 0; i < *n; i++)
-		if (w == 0 || lineless(&a[w - 1], &a[i]))
-			a[w++] = a[i];
-	*n = w;
+	uniqline(a, a, n);
 }
 
 /* The loops of leaf l, checked against the rings, into lpts. */

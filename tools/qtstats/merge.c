@@ -428,31 +428,28 @@ mergejoin(const char *name)
 		qsort(mg.dangling, mg.ndangling, sizeof(*mg.dangling),
 		    claimcmp);
 	for (i = 0; i < mg.nroots; i++) {
-		int alone = 0, took = 0;
+		struct claim *alone = NULL;
+		int took = 0;
 
 		r = &mg.roots[i];
 		j = lowerbound(mg.dangling, mg.ndangling, r);
 		for (; j < mg.ndangling && samecell(d = &mg.dangling[j], r);
 		    j++)
 			if (d->part == r->part)
-				alone = 1;	/* a node alone */
+				alone = d;	/* a node alone */
 			else if (!took && r->n.class == 'N' &&
 			    d->claimed == 0) {
 				d->claimed = 1;
 				uncount(r);
 				took = 1;
 			}
-		if (!alone)
+		if (alone == NULL)
 			continue;
 		r->claimed = 1;
 		/* another input's root too, which took no node for it: once */
 		if (!took && ((i > 0 && samecell(&mg.roots[i - 1], r)) ||
 		    (i + 1 < mg.nroots && samecell(&mg.roots[i + 1], r)))) {
-			j = lowerbound(mg.dangling, mg.ndangling, r);
-			for (; j < mg.ndangling &&
-			    samecell(d = &mg.dangling[j], r); j++)
-				if (d->part == r->part)
-					d->claimed = 1;
+			alone->claimed = 1;
 			uncount(r);
 		}
 	}
