@@ -28,6 +28,7 @@
 struct tri {
 	struct point3	 v[3];
 	double		 lo[3], hi[3];
+	signed char	 normal[3];	/* exact signs of the normal's parts */
 };
 
 struct worklist3 {
@@ -77,6 +78,28 @@ coord(struct point3 p, int axis)
 	return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
 }
 
+/* (3 + 16 eps) eps: orient2d's bound, which holds for any (a - b)(c - d) - (e - f)(g - h). */
+#define CROSS_BOUND	(3.3306690738754716e-16)
+
+/*
+ * The sign of cross(q - p, t - k) in the plane across axis (u, v its
+ * other two), filtered: exact arithmetic only when the bound cannot tell.
+ */
+static int
+crosssign(struct point3 p, struct point3 q, struct point3 k, struct point3 t,
+    int axis, int u, int v)
+{
+	double l = (coord(q, u) - coord(p, u)) * (coord(t, v) - coord(k, v));
+	double r = (coord(q, v) - coord(p, v)) * (coord(t, u) - coord(k, u));
+	double det = l - r, bound = CROSS_BOUND * (fabs(l) + fabs(r));
+
+	if (det > bound)
+		return 1;
+	if (-det > bound)
+		return -1;
+	return crossdir3(p, q, k, t, axis);
+}
+
 void
 split3_addshell(struct splitter3 *sp, const struct shell *g)
 {
@@ -99,6 +122,9 @@ split3_addshell(struct splitter3 *sp, const struct shell *g)
 			t->lo[a] = fmin(c0, fmin(c1, c2));
 			t->hi[a] = fmax(c0, fmax(c1, c2));
 		}
+		for (a = 0; a < 3; a++)
+			t->normal[a] = crosssign(t->v[0], t->v[1], t->v[0],
+			    t->v[2], a, a == 0 ? 1 : 0, a == 2 ? 1 : 2);
 	}
 }
 
@@ -121,28 +147,6 @@ pt3(double x, double y, double z)
 
 	p.x = x, p.y = y, p.z = z;
 	return p;
-}
-
-/* (3 + 16 eps) eps: orient2d's bound, which holds for any (a - b)(c - d) - (e - f)(g - h). */
-#define CROSS_BOUND	(3.3306690738754716e-16)
-
-/*
- * The sign of cross(q - p, t - k) in the plane across axis (u, v its
- * other two), filtered: exact arithmetic only when the bound cannot tell.
- */
-static int
-crosssign(struct point3 p, struct point3 q, struct point3 k, struct point3 t,
-    int axis, int u, int v)
-{
-	double l = (coord(q, u) - coord(p, u)) * (coord(t, v) - coord(k, v));
-	double r = (coord(q, v) - coord(p, v)) * (coord(t, u) - coord(k, u));
-	double det = l - r, bound = CROSS_BOUND * (fabs(l) + fabs(r));
-
-	if (det > bound)
-		return 1;
-	if (-det > bound)
-		return -1;
-	return crossdir3(p, q, k, t, axis);
 }
 
 /*
@@ -178,37 +182,37 @@ meetsbox(const struct tri *t, const double lo[3], const double hi[3],
 	}
 	if (!pos || !neg)
 		return 0;
-	for (e = 0; e < 3; e++) {
-		struct point3 p = t->v[e], q = t->v[(e + 1) % 3];
-		struct point3 r = t->v[(e + 2) % 3];
+	/*
+	 * The edge axes L = e x a.  The triangle and the open box are apart
+	 * when the triangle and the closed box's Minkowski difference has a
+	 * facet whose plane leaves the origin outside or on it.  A facet
+	 * with normal e x a is the sum of the edge e and a box edge, so the
+	 * triangle lies on its third vertex's side of e's plane along a: the
+	 * box, to be apart, lies on the other side, touching at most.  That
+	 * half of the test alone is needed.  Axis a with the normal's part
+	 * zero gives L along the normal, tested above.
+	 */
+	for (a = 0; a < 3; a++) {
+		int u = a == 0 ? 1 : 0, v = a == 2 ? 1 : 2;
 
-		for (a = 0; a < 3; a++) {
-			int u = a == 0 ? 1 : 0, v = a == 2 ? 1 : 2;
-			double top[3], bot[3];
-			struct point3 kmax, kmin;
+		if (t->normal[a] == 0)
+			continue;
+		for (e = 0; e < 3; e++) {
+			struct point3 p = t->v[e], q = t->v[(e + 1) % 3];
+			double far[3];
+			int up;
 
-			if (coord(p, u) == coord(q, u) &&
-			    coord(p, v) == coord(q, v))
-				continue;	/* the edge runs along the axis */
 			/*
-			 * L = (p_v - q_v, q_u - p_u) in the plane across a,
-			 * the signs of its parts exact: the box's corners
-			 * where L.k is largest and smallest.  The box and the
-			 * triangle's projections on L part, touching at most,
-			 * when L.(t - k) >= 0 for t = p, r at the largest,
-			 * or <= 0 at the smallest.
+			 * The box corner where cross(q - p, k - p), L.(k - p)
+			 * in the plane across a, is largest (normal[a] > 0,
+			 * the third vertex's side positive) or smallest.
 			 */
-			top[a] = bot[a] = 0;
-			top[u] = coord(p, v) > coord(q, v) ? hi[u] : lo[u];
-			bot[u] = coord(p, v) > coord(q, v) ? lo[u] : hi[u];
-			top[v] = coord(q, u) > coord(p, u) ? hi[v] : lo[v];
-			bot[v] = coord(q, u) > coord(p, u) ? lo[v] : hi[v];
-			kmax = pt3(top[0], top[1], top[2]);
-			kmin = pt3(bot[0], bot[1], bot[2]);
-			if ((crosssign(p, q, kmax, p, a, u, v) >= 0 &&
-			    crosssign(p, q, kmax, r, a, u, v) >= 0) ||
-			    (crosssign(p, q, kmin, p, a, u, v) <= 0 &&
-			    crosssign(p, q, kmin, r, a, u, v) <= 0))
+			up = t->normal[a] > 0;
+			far[a] = 0;
+			far[u] = (coord(p, v) > coord(q, v)) == up ? hi[u] : lo[u];
+			far[v] = (coord(q, u) > coord(p, u)) == up ? hi[v] : lo[v];
+			if (crosssign(p, q, pt3(far[0], far[1], far[2]), p, a,
+			    u, v) * t->normal[a] >= 0)
 				return 0;
 		}
 	}
