@@ -27,6 +27,7 @@
 
 struct tri {
 	struct point3	 v[3];
+	double		 c[3][3];	/* v[i] as c[i][axis] */
 	double		 lo[3], hi[3];
 	double		 normal[3];	/* (v1 - v0) x (v2 - v0), rounded */
 	double		 slack[3];	/* the plane's error bound, per unit */
@@ -125,8 +126,11 @@ split3_addshell(struct splitter3 *sp, const struct shell *g)
 	for (k = 0; k < g->nt; k++) {
 		struct tri *t = &sp->tris[sp->ntris++];
 
-		for (i = 0; i < 3; i++)
+		for (i = 0; i < 3; i++) {
 			t->v[i] = g->v[g->t[3 * k + i]];
+			for (a = 0; a < 3; a++)
+				t->c[i][a] = coord(t->v[i], a);
+		}
 		for (a = 0; a < 3; a++) {
 			double c0 = coord(t->v[0], a), c1 = coord(t->v[1], a);
 			double c2 = coord(t->v[2], a);
@@ -226,42 +230,48 @@ planeapart(const struct tri *t, const double lo[3], const double hi[3],
  * alone is needed.  With the turn across a zero, L is along the normal:
  * planeapart's test.
  */
-static inline int
-edgesapart(const struct tri *t, int a, int u, int v, const double lo[3],
-    const double hi[3])
+static int
+edgesapart(const struct tri *t, const double lo[3], const double hi[3])
 {
-	int e, up = t->turn[a] > 0;
+	static const int across[3][2] = { { 1, 2 }, { 0, 2 }, { 0, 1 } };
+	int a, e;
 
-	if (t->turn[a] == 0)
-		return 0;
-	for (e = 0; e < 3; e++) {
-		struct point3 p = t->v[e], q = t->v[e == 2 ? 0 : e + 1];
-		double ku, kv, l, r, det, bound;
-		int sign;
+	for (a = 0; a < 3; a++) {
+		int u = across[a][0], v = across[a][1], up = t->turn[a] > 0;
 
-		/*
-		 * The box corner k where cross(q - p, k - p), L.(k - p) in
-		 * the plane across a, is largest (the third vertex's side
-		 * positive) or smallest; the box is apart when it is not
-		 * past the edge's line toward the third vertex.
-		 */
-		ku = (coord(p, v) > coord(q, v)) == up ? hi[u] : lo[u];
-		kv = (coord(q, u) > coord(p, u)) == up ? hi[v] : lo[v];
-		l = (coord(q, u) - coord(p, u)) * (coord(p, v) - kv);
-		r = (coord(q, v) - coord(p, v)) * (coord(p, u) - ku);
-		det = l - r, bound = CROSS_BOUND * (fabs(l) + fabs(r));
-		if (det > bound)
-			sign = 1;
-		else if (-det > bound)
-			sign = -1;
-		else {
-			double k[3];
+		if (t->turn[a] == 0)
+			continue;
+		for (e = 0; e < 3; e++) {
+			const double *p = t->c[e], *q = t->c[e == 2 ? 0 : e + 1];
+			double ku, kv, l, r, det, bound;
+			int sign;
 
-			k[a] = 0, k[u] = ku, k[v] = kv;
-			sign = crossdir3(p, q, pt3(k[0], k[1], k[2]), p, a);
+			/*
+			 * The box corner k where cross(q - p, k - p), L.(k -
+			 * p) in the plane across a, is largest (the third
+			 * vertex's side positive) or smallest; the box is
+			 * apart when it is not past the edge's line toward
+			 * the third vertex.
+			 */
+			ku = (p[v] > q[v]) == up ? hi[u] : lo[u];
+			kv = (q[u] > p[u]) == up ? hi[v] : lo[v];
+			l = (q[u] - p[u]) * (p[v] - kv);
+			r = (q[v] - p[v]) * (p[u] - ku);
+			det = l - r, bound = CROSS_BOUND * (fabs(l) + fabs(r));
+			if (det > bound)
+				sign = 1;
+			else if (-det > bound)
+				sign = -1;
+			else {
+				double k[3];
+
+				k[a] = 0, k[u] = ku, k[v] = kv;
+				sign = crossdir3(t->v[e], t->v[e == 2 ? 0 :
+				    e + 1], pt3(k[0], k[1], k[2]), t->v[e], a);
+			}
+			if (sign * t->turn[a] >= 0)
+				return 1;
 		}
-		if (sign * t->turn[a] >= 0)
-			return 1;
 	}
 	return 0;
 }
@@ -283,8 +293,7 @@ meetsbox(const struct tri *t, const double lo[3], const double hi[3],
 		if (t->v[c].x > lo[0] && t->v[c].x < hi[0] && t->v[c].y > lo[1] &&
 		    t->v[c].y < hi[1] && t->v[c].z > lo[2] && t->v[c].z < hi[2])
 			return 1;
-	return !planeapart(t, lo, hi, o) && !edgesapart(t, 0, 1, 2, lo, hi) &&
-	    !edgesapart(t, 1, 0, 2, lo, hi) && !edgesapart(t, 2, 0, 1, lo, hi);
+	return !planeapart(t, lo, hi, o) && !edgesapart(t, lo, hi);
 }
 
 static int
