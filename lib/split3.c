@@ -221,6 +221,26 @@ planeapart(const struct tri *t, const double lo[3], const double hi[3],
 }
 
 /*
+ * The side of t's plane where grid point (g[0][b[0]], g[1][b[1]],
+ * g[2][b[2]]) lies, as orient3d's sign, by the rounded normal; 0 when its
+ * error bound cannot tell (planeapart's, the box a point).
+ */
+static int
+planeside(const struct tri *t, const double g[3][3], const int b[3])
+{
+	double val = 0, err = PLANE_FLOOR;
+	int a;
+
+	for (a = 0; a < 3; a++) {
+		double d = g[a][b[a]] - t->c[0][a];
+
+		val += t->normal[a] * d;
+		err += fabs(d) * t->slack[a];
+	}
+	return val > err ? 1 : val < -err ? -1 : 0;
+}
+
+/*
  * The edge axes L = e x a, a fixed.  The triangle and the open box are
  * apart when the triangle and the closed box's Minkowski difference has a
  * facet whose plane leaves the origin outside or on it.  A facet with
@@ -355,11 +375,12 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 	for (j = 0; j < n; j++) {
 		const struct tri *t = &sp->tris[list[j]];
 		/* orient3d at grid point (i, j, k), 27 of them; 2 unknown */
-		signed char s[27], nudged[8];
+		signed char s[27], nudged[8], side[8];
 		int in[3][2], m = 0;
 
 		memset(s, 2, sizeof(s));
 		memset(nudged, 2, sizeof(nudged));
+		memset(side, 2, sizeof(side));
 		for (a = 0; a < 3; a++) {
 			in[a][0] = t->lo[a] < g[a][1] && t->hi[a] > g[a][0];
 			in[a][1] = t->lo[a] < g[a][2] && t->hi[a] > g[a][1];
@@ -406,10 +427,20 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 					break;
 			if (a < 3 || t->hi[d] < g[d][0] || t->lo[d] > g[d][1])
 				continue;
+			if (side[p0] == 2)
+				side[p0] = planeside(t, g, b0);
+			if (side[q] == 2)
+				side[q] = planeside(t, g, b1);
+			if (side[p0] != 0 && side[p0] == side[q])
+				continue;	/* both ends on one side */
 			c0 = pt3(g[0][b0[0]], g[1][b0[1]], g[2][b0[2]]);
 			c1 = pt3(g[0][b1[0]], g[1][b1[1]], g[2][b1[2]]);
 			if (!axisline_meets(t->v[0], t->v[1], t->v[2], c0, d))
 				continue;
+			if (side[p0] != 0 && side[q] != 0) {
+				flip[q] ^= 1;	/* on the two sides */
+				continue;
+			}
 			if (nudged[p0] == 2)
 				nudged[p0] = orient3d_nudged(t->v[0], t->v[1],
 				    t->v[2], c0);
