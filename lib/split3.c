@@ -7,7 +7,9 @@
  * set of exact signs (coordinate comparisons, orient3d, arc_crossdir of the
  * points projected along an axis).  A closed triangle and an open box are
  * apart exactly when one of these axes has the triangle's projection on
- * one side of the box's open one, touching allowed.
+ * one side of the box's open one, touching allowed.  Rounded arithmetic
+ * decides first wherever its error bound lets it, so that the exact signs
+ * are reached only for a box a few ulps from the triangle's plane or edges.
  *
  * A cube without triangles is full or empty by the even-odd parity of its
  * lowest corner c + d, d = (e, e^2, e^3) infinitesimal (lib/solid.c):
@@ -85,11 +87,13 @@ coord(struct point3 p, int axis)
 #define CROSS_BOUND	(3.3306690738754716e-16)
 
 /*
- * 8 eps: a part of the rounded normal is off by at most CROSS_BOUND times
- * its two products' magnitudes, and each of the few roundings from there
- * to the plane's value over a box by eps times what it rounds; 8 eps per
- * unit of distance covers the sum more than twice.  PLANE_FLOOR covers
- * products that underflow.
+ * 8 eps per unit of distance, times (|l| + |r| + |n|) for a part n = l - r
+ * of the rounded normal: n is off by at most (3 + 16 eps) eps (|l| + |r|),
+ * as orient2d, plus eps |n| for its rounding; the value over a box adds,
+ * per axis, its distance's, product's and sums' roundings, under 6 eps
+ * |n| (|d| + w).  The bound thus holds with more than 3 eps (|l| + |r|) to
+ * spare per unit, which covers its own roundings.  PLANE_FLOOR covers
+ * products that underflow; coordinates within 1e100 never overflow.
  */
 #define PLANE_SLACK	(8.8817841970012523e-16)
 #define PLANE_FLOOR	(1e-290)
