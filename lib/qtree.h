@@ -591,14 +591,15 @@ void	 qt3_echo(const struct qt3rec *);
  * cube is P when a triangle meets its open interior, else F or E by the
  * even-odd parity of a point just inside its lowest corner, carried from
  * the parent.  split3_children gives the eight children's parities and
- * sorts the cell's triangles into them; split3_child moves child q's to
- * the next level's list and gives their count.
+ * sorts the cell's triangles into them, and returns the set of children
+ * that have any (bit q for child q); split3_child moves child q's to the
+ * next level's list and gives their count.
  */
 struct splitter3 *split3_new(const struct universe3 *);
 void	 split3_free(struct splitter3 *);
 void	 split3_addshell(struct splitter3 *, const struct shell *);
 size_t	 split3_root(struct splitter3 *, int *);
-void	 split3_children(struct splitter3 *, int, uint64_t, uint64_t,
+unsigned split3_children(struct splitter3 *, int, uint64_t, uint64_t,
 	    uint64_t, size_t, int, int[8]);
 size_t	 split3_child(struct splitter3 *, int, size_t, int);
 

@@ -361,7 +361,7 @@ split3_root(struct splitter3 *sp, int *inside)
 static const int from[8] = { 0, 0, 0, 1, 0, 1, 2, 3 };
 static const int ax[8] = { -1, 0, 1, 1, 2, 2, 2, 2 };
 
-void
+unsigned
 split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
     uint64_t iz, size_t n, int inside, int parity[8])
 {
@@ -370,6 +370,7 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 	double g[3][3], h = sp->step[level + 1];
 	uint64_t base[3] = { 2 * ix, 2 * iy, 2 * iz };
 	int flip[8] = { 0 }, a, k, q;
+	unsigned occupied = 0;
 	size_t j;
 
 	for (a = 0; a < 3; a++)
@@ -401,6 +402,7 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 			    t->lo[1] > g[1][i1] && t->hi[1] < g[1][i1 + 1] &&
 			    t->lo[2] > g[2][i2] && t->hi[2] < g[2][i2 + 1]) {
 				mask[j] = 1 << (4 * i2 + 2 * i1 + i0);
+				occupied |= mask[j];
 				continue;
 			}
 		}
@@ -417,6 +419,7 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 				m |= 1 << q;
 		}
 		mask[j] = m;
+		occupied |= m;
 		/* the paths: child q's point from child from[q]'s */
 		for (q = 1; q < 8; q++) {
 			int p0 = from[q], d = ax[q], b0[3], b1[3];
@@ -457,6 +460,7 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 	parity[0] = inside;
 	for (q = 1; q < 8; q++)
 		parity[q] = parity[from[q]] ^ flip[q];
+	return occupied;
 }
 
 size_t

@@ -112,7 +112,8 @@ static void
 visit3(int level, uint64_t ix, uint64_t iy, uint64_t iz, size_t n,
     int inside)
 {
-	int parity[8], q;
+	unsigned occupied = 0;
+	int parity[8], q, leaves;
 
 	if (!splits3(level, n)) {
 		emit3(level, ix, iy, iz, split_class(n, inside));
@@ -126,12 +127,16 @@ visit3(int level, uint64_t ix, uint64_t iy, uint64_t iz, size_t n,
 		return;
 	}
 	if (n > 0)
-		split3_children(in3.sp, level, ix, iy, iz, n, inside, parity);
+		occupied = split3_children(in3.sp, level, ix, iy, iz, n, inside,
+		    parity);
 	else
 		for (q = 0; q < 8; q++)
 			parity[q] = inside;
+	/* the children are leaves: whether they have triangles is enough */
+	leaves = !splits3(level + 1, 1);
 	for (q = 0; q < 8; q++) {
-		size_t m = n > 0 ? split3_child(in3.sp, level, n, q) : 0;
+		size_t m = n == 0 ? 0 : leaves ? occupied >> q & 1 :
+		    split3_child(in3.sp, level, n, q);
 
 		w3.path[level] = '0' + q;
 		w3.path[level + 1] = '\0';
