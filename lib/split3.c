@@ -28,8 +28,7 @@
 #include "qtree.h"
 
 struct tri {
-	struct point3	 v[3];
-	double		 c[3][3];	/* v[i] as c[i][axis] */
+	double		 c[3][3];	/* corner i's coordinate on an axis */
 	double		 lo[3], hi[3];
 	double		 normal[3];	/* (v1 - v0) x (v2 - v0), rounded */
 	double		 slack[3];	/* the plane's error bound, per unit */
@@ -77,13 +76,31 @@ split3_free(struct splitter3 *sp)
 	free(sp);
 }
 
+static struct point3
+pt3(double x, double y, double z)
+{
+	struct point3 p;
+
+	p.x = x, p.y = y, p.z = z;
+	return p;
+}
+
+static struct point3
+vert(const struct tri *t, int i)
+{
+	return pt3(t->c[i][0], t->c[i][1], t->c[i][2]);
+}
+
 static double
 coord(struct point3 p, int axis)
 {
 	return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
 }
 
-/* (3 + 16 eps) eps: orient2d's bound, which holds for any (a - b)(c - d) - (e - f)(g - h). */
+/*
+ * (3 + 16 eps) eps: orient2d's bound, which holds for any
+ * (a - b)(c - d) - (e - f)(g - h).
+ */
 #define CROSS_BOUND	(3.3306690738754716e-16)
 
 /*
@@ -131,26 +148,25 @@ split3_addshell(struct splitter3 *sp, const struct shell *g)
 		struct tri *t = &sp->tris[sp->ntris++];
 
 		for (i = 0; i < 3; i++) {
-			t->v[i] = g->v[g->t[3 * k + i]];
-			for (a = 0; a < 3; a++)
-				t->c[i][a] = coord(t->v[i], a);
+			struct point3 p = g->v[g->t[3 * k + i]];
+
+			t->c[i][0] = p.x, t->c[i][1] = p.y, t->c[i][2] = p.z;
 		}
 		for (a = 0; a < 3; a++) {
-			double c0 = coord(t->v[0], a), c1 = coord(t->v[1], a);
-			double c2 = coord(t->v[2], a);
+			double c0 = t->c[0][a], c1 = t->c[1][a], c2 = t->c[2][a];
 
 			t->lo[a] = fmin(c0, fmin(c1, c2));
 			t->hi[a] = fmax(c0, fmax(c1, c2));
 		}
 		for (a = 0; a < 3; a++) {
 			int u = a == 0 ? 1 : 0, v = a == 2 ? 1 : 2;
-			double l = (coord(t->v[1], u) - coord(t->v[0], u)) *
-			    (coord(t->v[2], v) - coord(t->v[0], v));
-			double r = (coord(t->v[1], v) - coord(t->v[0], v)) *
-			    (coord(t->v[2], u) - coord(t->v[0], u));
+			double l = (t->c[1][u] - t->c[0][u]) *
+			    (t->c[2][v] - t->c[0][v]);
+			double r = (t->c[1][v] - t->c[0][v]) *
+			    (t->c[2][u] - t->c[0][u]);
 
-			t->turn[a] = crosssign(t->v[0], t->v[1], t->v[0],
-			    t->v[2], a, u, v);
+			t->turn[a] = crosssign(vert(t, 0), vert(t, 1),
+			    vert(t, 0), vert(t, 2), a, u, v);
 			t->normal[a] = a == 1 ? r - l : l - r;
 			t->slack[a] = PLANE_SLACK * (fabs(l) + fabs(r) +
 			    fabs(t->normal[a]));
@@ -170,16 +186,10 @@ reserve(struct splitter3 *sp, int level, size_t n)
 	l->masks = xreallocarray(l->masks, l->cap, sizeof(*l->masks));
 }
 
-static struct point3
-pt3(double x, double y, double z)
-{
-	struct point3 p;
-
-	p.x = x, p.y = y, p.z = z;
-	return p;
-}
-
-/* Corner c of a box (x bit c & 1, y bit c & 2, z bit c & 4) in a 3 x 3 x 3 grid. */
+/*
+ * Corner c of a box (x bit c & 1, y bit c & 2, z bit c & 4) in a
+ * 3 x 3 x 3 grid.
+ */
 static const unsigned char gridcorner[8] = { 0, 1, 3, 4, 9, 10, 12, 13 };
 
 /*
@@ -196,7 +206,7 @@ planeapart(const struct tri *t, const double lo[3], const double hi[3],
 	int a, c, pos = 0, neg = 0;
 
 	for (a = 0; a < 3; a++) {
-		double d = lo[a] - coord(t->v[0], a), w = hi[a] - lo[a];
+		double d = lo[a] - t->c[0][a], w = hi[a] - lo[a];
 		double nw = t->normal[a] * w;
 
 		base += t->normal[a] * d;
@@ -215,7 +225,7 @@ planeapart(const struct tri *t, const double lo[3], const double hi[3],
 		signed char *s = &o[gridcorner[c]];
 
 		if (*s == 2)
-			*s = orient3d(t->v[0], t->v[1], t->v[2], pt3(c & 1 ?
+			*s = orient3d(vert(t, 0), vert(t, 1), vert(t, 2), pt3(c & 1 ?
 			    hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ?
 			    hi[2] : lo[2]));
 		pos |= *s > 0;
@@ -290,8 +300,8 @@ edgesapart(const struct tri *t, const double lo[3], const double hi[3])
 				double k[3];
 
 				k[a] = 0, k[u] = ku, k[v] = kv;
-				sign = crossdir3(t->v[e], t->v[e == 2 ? 0 :
-				    e + 1], pt3(k[0], k[1], k[2]), t->v[e], a);
+				sign = crossdir3(vert(t, e), vert(t, e == 2 ? 0 :
+				    e + 1), pt3(k[0], k[1], k[2]), vert(t, e), a);
 			}
 			if (sign * t->turn[a] >= 0)
 				return 1;
@@ -314,8 +324,9 @@ meetsbox(const struct tri *t, const double lo[3], const double hi[3],
 		if (t->hi[a] <= lo[a] || t->lo[a] >= hi[a])
 			return 0;
 	for (c = 0; c < 3; c++)	/* a corner inside: no axis can part them */
-		if (t->v[c].x > lo[0] && t->v[c].x < hi[0] && t->v[c].y > lo[1] &&
-		    t->v[c].y < hi[1] && t->v[c].z > lo[2] && t->v[c].z < hi[2])
+		if (t->c[c][0] > lo[0] && t->c[c][0] < hi[0] &&
+		    t->c[c][1] > lo[1] && t->c[c][1] < hi[1] &&
+		    t->c[c][2] > lo[2] && t->c[c][2] < hi[2])
 			return 1;
 	return !planeapart(t, lo, hi, o) && !edgesapart(t, lo, hi);
 }
@@ -328,8 +339,8 @@ rootparity(const struct splitter3 *sp)
 	int inside = 0;
 
 	for (i = 0; i < sp->ntris; i++)
-		inside ^= ray3_crosses(sp->tris[i].v[0], sp->tris[i].v[1],
-		    sp->tris[i].v[2], p);
+		inside ^= ray3_crosses(vert(&sp->tris[i], 0),
+		    vert(&sp->tris[i], 1), vert(&sp->tris[i], 2), p);
 	return inside;
 }
 
@@ -442,18 +453,19 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 				continue;	/* both ends on one side */
 			c0 = pt3(g[0][b0[0]], g[1][b0[1]], g[2][b0[2]]);
 			c1 = pt3(g[0][b1[0]], g[1][b1[1]], g[2][b1[2]]);
-			if (!axisline_meets(t->v[0], t->v[1], t->v[2], c0, d))
+			if (!axisline_meets(vert(t, 0), vert(t, 1), vert(t, 2),
+			    c0, d))
 				continue;
 			if (side[p0] != 0 && side[q] != 0) {
 				flip[q] ^= 1;	/* on the two sides */
 				continue;
 			}
 			if (nudged[p0] == 2)
-				nudged[p0] = orient3d_nudged(t->v[0], t->v[1],
-				    t->v[2], c0);
+				nudged[p0] = orient3d_nudged(vert(t, 0),
+				    vert(t, 1), vert(t, 2), c0);
 			if (nudged[q] == 2)
-				nudged[q] = orient3d_nudged(t->v[0], t->v[1],
-				    t->v[2], c1);
+				nudged[q] = orient3d_nudged(vert(t, 0), vert(t, 1),
+				    vert(t, 2), c1);
 			flip[q] ^= nudged[p0] != nudged[q];
 		}
 	}
