@@ -106,6 +106,17 @@ put3(char *p, const struct text3 *t, int index)
 	return p + (index ? t->ilen : t->len);
 }
 
+/* The cache kept for universe u, emptied when it held another's. */
+static void
+cacheuniverse(const struct universe3 *u)
+{
+	if (cache3.u.x0 != u->x0 || cache3.u.y0 != u->y0 ||
+	    cache3.u.z0 != u->z0 || cache3.u.size != u->size) {
+		memset(cache3.t, 0, sizeof(cache3.t));
+		cache3.u = *u;
+	}
+}
+
 /* A cell of the universe u: its corner and size computed, not taken. */
 void
 qt3_cell(const struct universe3 *u, const struct cell3 *c)
@@ -113,11 +124,7 @@ qt3_cell(const struct universe3 *u, const struct cell3 *c)
 	const struct text3 *x, *y, *z;
 	char buf[256], *p;
 
-	if (cache3.u.x0 != u->x0 || cache3.u.y0 != u->y0 ||
-	    cache3.u.z0 != u->z0 || cache3.u.size != u->size) {
-		memset(cache3.t, 0, sizeof(cache3.t));
-		cache3.u = *u;
-	}
+	cacheuniverse(u);
 	x = text3(u, c->level, 0, c->ix);
 	y = text3(u, c->level, 1, c->iy);
 	z = text3(u, c->level, 2, c->iz);
@@ -147,6 +154,30 @@ qt3_cell(const struct universe3 *u, const struct cell3 *c)
 		*p++ = ' ';
 		p = fmtint(p, (long long)c->id);
 	}
+	*p++ = '\n';
+	qt_putrecords(buf, p - buf, 1);
+}
+
+/*
+ * Mesh vertex id at corner (ix, iy, iz) of the cells at level of the
+ * universe u: the coordinates are those of the cells' corners, the same
+ * doubles whatever level the corner is reached from (qtleaves.c says why).
+ */
+void
+qt3_cornervertex(const struct universe3 *u, unsigned long long id,
+    int level, uint64_t ix, uint64_t iy, uint64_t iz)
+{
+	char buf[160], *p;
+
+	cacheuniverse(u);
+	p = stpcpy(buf, "vertex ");
+	p = fmtint(p, (long long)id);
+	*p++ = ' ';
+	p = put3(p, text3(u, level, 0, ix), 0);
+	*p++ = ' ';
+	p = put3(p, text3(u, level, 1, iy), 0);
+	*p++ = ' ';
+	p = put3(p, text3(u, level, 2, iz), 0);
 	*p++ = '\n';
 	qt_putrecords(buf, p - buf, 1);
 }
