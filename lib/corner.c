@@ -64,7 +64,7 @@ zbefore(const struct live *a, uint64_t bx, uint64_t by, uint64_t bz)
  * Grid points of coarse cells end in many zero bits, which a product
  * keeps: the slot is taken from the high bits of the products.
  */
-static size_t
+static INLINE size_t
 slotof(const struct corners *t, uint64_t x, uint64_t y, uint64_t z)
 {
 	return (x * UINT64_C(0x9E3779B97F4A7C15) ^
@@ -207,7 +207,7 @@ newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y, uint64_t z)
  * The slot of the point at (x, y, z), or the free slot where it would
  * go.
  */
-static size_t
+static INLINE size_t
 lookup(const struct corners *t, uint64_t x, uint64_t y, uint64_t z)
 {
 	const struct live *v;
@@ -228,8 +228,8 @@ lookup(const struct corners *t, uint64_t x, uint64_t y, uint64_t z)
  * numbered.  The table drops the points behind the sweep when it fills,
  * which no cell asks for again.
  */
-uint32_t
-corner_id3(struct corners *t, uint64_t x, uint64_t y, uint64_t z)
+static INLINE uint32_t
+idof(struct corners *t, uint64_t x, uint64_t y, uint64_t z)
 {
 	size_t k = lookup(t, x, y, z);
 
@@ -238,9 +238,16 @@ corner_id3(struct corners *t, uint64_t x, uint64_t y, uint64_t z)
 }
 
 uint32_t
+corner_id3(struct corners *t, uint64_t x, uint64_t y, uint64_t z)
+{
+	return idof(t, x, y, z);
+}
+
+/* The same at z 0, the lookup inlined for a plane's points. */
+uint32_t
 corner_id(struct corners *t, uint64_t x, uint64_t y)
 {
-	return corner_id3(t, x, y, 0);
+	return idof(t, x, y, 0);
 }
 
 /* The number of the vertex at (x, y) if it has one and is live, else 0. */
