@@ -218,19 +218,20 @@ export -f uniform3
 	[ "$want" -gt 130000 ]
 }
 
-# The example of qtleaves(1) that starts with $1: its command (the lines
-# up to the first that does not end in a pipe) in cmd, what it prints in
-# printed.
-example() {
-	sed -n "/^\\\$ ${1//\//\\/}/,/^\\.Ed/p" "$TOP/man/qtleaves.1" | sed '$d' > ex
-	cmd=$(sed -n '1,/[^|]$/p' ex | sed 's/^\$ //')
-	printed=$(sed '1,/[^|]$/d' ex)
-	[ -n "$cmd" ] && [ -n "$printed" ]
+# The example of qtleaves(1) that holds $1: its commands in run.sh, run
+# in the scratch directory with tests/ linked there, and what the page
+# prints in printed (test_helper.bash's example, commands and outputs).
+pageexample() {
+	[ -e tests ] || ln -s "$TOP/tests" .
+	example "$TOP/man/qtleaves.1" "$1" > block
+	[ -s block ] || { echo "no example holds: $1"; return 1; }
+	commands < block > run.sh
+	outputs < block > printed
 }
 
 @test "qtleaves(1): the unit cube's hex runs as printed, and is the cube's by hand" {
-	example 'polyread -u 0,0,0,2 tests/solids/cube.off'
-	[ "$printed" = "$( (cd "$TOP" && bash -c "$cmd") )" ]
+	pageexample 'cube.off | qtsplit -l 1'
+	bash run.sh | diff -u printed -
 	# by hand: the cube [0,1]^3 is child 0 of the universe [0,2]^3
 	cat > hand <<-'EOF'
 	leaf 0 1 0 0 0 0 0 0 1 F 1
@@ -244,15 +245,55 @@ example() {
 	vertex 8 0 1 1
 	elem 1 hex 1 2 3 4 5 6 7 8
 	EOF
-	diff -u hand - <<< "$printed"
+	diff -u hand printed
 }
 
 @test "qtleaves(1): the box's count runs as printed, and is the page's hand count" {
-	example 'polyread tests/solids/slab.off'
-	[ "$printed" = "$( (cd "$TOP" && bash -c "$cmd") )" ]
+	pageexample 'END { print v, e }'
+	bash run.sh | diff -u printed -
 	# 4 cubes of side 1/2 on 3x3x2 corners, 64 of side 1/8 on 9x9x2
 	# corners of which 9 are the big cubes'
-	[ "$printed" = "$((3 * 3 * 2 + 9 * 9 * 2 - 9)) $((4 + 64))" ]
+	[ "$(cat printed)" = "$((3 * 3 * 2 + 9 * 9 * 2 - 9)) $((4 + 64))" ]
 	polyread "$SOLIDS/slab.off" | qtsplit -l 3 | qtleaves -n |
 	    awk -f "$HEXCHECK" | head -n 2 | diff -u - <(printf 'vertices 171\nelements 68\n')
+}
+
+@test "qtleaves(1): the box as a VTK file, which meshio reads as 68 hexahedra of positive Jacobian" {
+	pageexample 'slab.vtk'
+	[ ! -s printed ]
+	bash run.sh
+	grep -qx 'POINTS 171 double' slab.vtk
+	grep -qx 'CELLS 68 612' slab.vtk
+	py=$(meshio_python) || skip "python3-meshio is not installed"
+	want=$(polyread "$SOLIDS/slab.off" | qtsplit -l 3 | qtstats |
+	    awk '$1 == "volume_full_partial" { print $2 }')
+	polyread "$SOLIDS/slab.off" | qtsplit -l 3 | qtleaves -n |
+	    awk '$1 == "vertex" { print $3, $4, $5 }' > points
+	"$py" - "$want" <<-'EOF'
+	import sys
+	import meshio
+	import numpy as np
+	m = meshio.read("slab.vtk")
+	assert [c.type for c in m.cells] == ["hexahedron"], m.cells
+	h = m.cells_dict["hexahedron"]
+	p = m.points
+	assert len(p) == 171 and len(h) == 68, (len(p), len(h))
+	assert np.array_equal(p, np.loadtxt("points"))
+	# the trilinear map from the unit cube, VTK's corner k at (x, y, z)
+	ref = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0),
+	    (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+	vol = 0.0
+	for k, r in enumerate(ref):
+	    # derivatives at corner k: the edges to the corners across each axis
+	    cols = []
+	    for a in range(3):
+	        q = list(r)
+	        q[a] = 1 - q[a]
+	        j = ref.index(tuple(q))
+	        cols.append((p[h[:, j]] - p[h[:, k]]) * (1 if r[a] == 0 else -1))
+	    det = np.linalg.det(np.stack(cols, axis=2))
+	    assert (det > 0).all(), (k, det.min())
+	    vol += det.sum() / 8
+	assert abs(vol - float(sys.argv[1])) < 1e-12, (vol, sys.argv[1])
+	EOF
 }
