@@ -12,5 +12,11 @@ double	 qt_realfield(struct qtreader *, const char *, const char *);
 long long qt_intfield(struct qtreader *, const char *, const char *,
 	    long long, long long);
 
-/* write.c: n bytes holding k records, newlines included. */
+/*
+ * write.c: n bytes holding k records, newlines included; or a record
+ * formatted in place, in the room for n bytes qt_room gives, taken up to
+ * its end, newline included, by qt_recorded.
+ */
 void	 qt_putrecords(const char *, size_t, unsigned long long);
+char	*qt_room(size_t);
+void	 qt_recorded(const char *);

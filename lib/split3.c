@@ -27,7 +27,11 @@
 
 struct tri {
 	struct point3	 v[3];
+	double		 c[3][3];	/* v[i] as c[i][axis] */
 	double		 lo[3], hi[3];
+	double		 normal[3];	/* (v1 - v0) x (v2 - v0), rounded */
+	double		 slack[3];	/* the plane's error bound, per unit */
+	signed char	 turn[3];	/* exact: the turn of v0 v1 v2 across an axis */
 };
 
 struct worklist3 {
@@ -77,6 +81,38 @@ coord(struct point3 p, int axis)
 	return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
 }
 
+/* (3 + 16 eps) eps: orient2d's bound, which holds for any (a - b)(c - d) - (e - f)(g - h). */
+#define CROSS_BOUND	(3.3306690738754716e-16)
+
+/*
+ * 8 eps: a part of the rounded normal is off by at most CROSS_BOUND times
+ * its two products' magnitudes, and each of the few roundings from there
+ * to the plane's value over a box by eps times what it rounds; 8 eps per
+ * unit of distance covers the sum more than twice.  PLANE_FLOOR covers
+ * products that underflow.
+ */
+#define PLANE_SLACK	(8.8817841970012523e-16)
+#define PLANE_FLOOR	(1e-290)
+
+/*
+ * The sign of cross(q - p, t - k) in the plane across axis (u, v its
+ * other two), filtered: exact arithmetic only when the bound cannot tell.
+ */
+static int
+crosssign(struct point3 p, struct point3 q, struct point3 k, struct point3 t,
+    int axis, int u, int v)
+{
+	double l = (coord(q, u) - coord(p, u)) * (coord(t, v) - coord(k, v));
+	double r = (coord(q, v) - coord(p, v)) * (coord(t, u) - coord(k, u));
+	double det = l - r, bound = CROSS_BOUND * (fabs(l) + fabs(r));
+
+	if (det > bound)
+		return 1;
+	if (-det > bound)
+		return -1;
+	return crossdir3(p, q, k, t, axis);
+}
+
 void
 split3_addshell(struct splitter3 *sp, const struct shell *g)
 {
@@ -90,14 +126,30 @@ split3_addshell(struct splitter3 *sp, const struct shell *g)
 	for (k = 0; k < g->nt; k++) {
 		struct tri *t = &sp->tris[sp->ntris++];
 
-		for (i = 0; i < 3; i++)
+		for (i = 0; i < 3; i++) {
 			t->v[i] = g->v[g->t[3 * k + i]];
+			for (a = 0; a < 3; a++)
+				t->c[i][a] = coord(t->v[i], a);
+		}
 		for (a = 0; a < 3; a++) {
 			double c0 = coord(t->v[0], a), c1 = coord(t->v[1], a);
 			double c2 = coord(t->v[2], a);
 
 			t->lo[a] = fmin(c0, fmin(c1, c2));
 			t->hi[a] = fmax(c0, fmax(c1, c2));
+		}
+		for (a = 0; a < 3; a++) {
+			int u = a == 0 ? 1 : 0, v = a == 2 ? 1 : 2;
+			double l = (coord(t->v[1], u) - coord(t->v[0], u)) *
+			    (coord(t->v[2], v) - coord(t->v[0], v));
+			double r = (coord(t->v[1], v) - coord(t->v[0], v)) *
+			    (coord(t->v[2], u) - coord(t->v[0], u));
+
+			t->turn[a] = crosssign(t->v[0], t->v[1], t->v[0],
+			    t->v[2], a, u, v);
+			t->normal[a] = a == 1 ? r - l : l - r;
+			t->slack[a] = PLANE_SLACK * (fabs(l) + fabs(r) +
+			    fabs(t->normal[a]));
 		}
 	}
 }
@@ -123,39 +175,116 @@ pt3(double x, double y, double z)
 	return p;
 }
 
-/* (3 + 16 eps) eps: orient2d's bound, which holds for any (a - b)(c - d) - (e - f)(g - h). */
-#define CROSS_BOUND	(3.3306690738754716e-16)
+/* Corner c of a box (x bit c & 1, y bit c & 2, z bit c & 4) in a 3 x 3 x 3 grid. */
+static const unsigned char gridcorner[8] = { 0, 1, 3, 4, 9, 10, 12, 13 };
 
 /*
- * The sign of cross(q - p, t - k) in the plane across axis (u, v its
- * other two), filtered: exact arithmetic only when the bound cannot tell.
+ * Whether the plane of t parts it from the open box lo..hi, each corner's
+ * side exact: o[gridcorner[c]] holds orient3d at corner c, computed here
+ * when 2.  The rounded normal's value over the box decides first when its
+ * error bound lets it.
  */
 static int
-crosssign(struct point3 p, struct point3 q, struct point3 k, struct point3 t,
-    int axis, int u, int v)
+planeapart(const struct tri *t, const double lo[3], const double hi[3],
+    signed char *o)
 {
-	double l = (coord(q, u) - coord(p, u)) * (coord(t, v) - coord(k, v));
-	double r = (coord(q, v) - coord(p, v)) * (coord(t, u) - coord(k, u));
-	double det = l - r, bound = CROSS_BOUND * (fabs(l) + fabs(r));
+	double base = 0, top = 0, bottom = 0, err = PLANE_FLOOR;
+	int a, c, pos = 0, neg = 0;
 
-	if (det > bound)
+	for (a = 0; a < 3; a++) {
+		double d = lo[a] - coord(t->v[0], a), w = hi[a] - lo[a];
+		double nw = t->normal[a] * w;
+
+		base += t->normal[a] * d;
+		if (nw > 0)
+			top += nw;
+		else
+			bottom += nw;
+		err += (fabs(d) + w) * t->slack[a];
+	}
+	top += base, bottom += base;
+	if (top < -err || bottom > err)
 		return 1;
-	if (-det > bound)
-		return -1;
-	return crossdir3(p, q, k, t, axis);
+	if (top > err && bottom < -err)
+		return 0;
+	for (c = 0; c < 8; c++) {
+		signed char *s = &o[gridcorner[c]];
+
+		if (*s == 2)
+			*s = orient3d(t->v[0], t->v[1], t->v[2], pt3(c & 1 ?
+			    hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ?
+			    hi[2] : lo[2]));
+		pos |= *s > 0;
+		neg |= *s < 0;
+	}
+	return !pos || !neg;
 }
 
 /*
- * Whether triangle t meets the open box lo..hi.  o[8], when not NULL,
- * holds orient3d at the box's corners (corner c at x bit c & 1, y bit
- * c & 2, z bit c & 4), computed here when 2.
+ * The edge axes L = e x a, a fixed.  The triangle and the open box are
+ * apart when the triangle and the closed box's Minkowski difference has a
+ * facet whose plane leaves the origin outside or on it.  A facet with
+ * normal e x a is the sum of the edge e and a box edge, so the triangle
+ * lies on its third vertex's side of e's plane along a: the box, to be
+ * apart, lies on the other side, touching at most.  That half of the test
+ * alone is needed.  With the turn across a zero, L is along the normal:
+ * planeapart's test.
+ */
+static int
+edgesapart(const struct tri *t, const double lo[3], const double hi[3])
+{
+	static const int across[3][2] = { { 1, 2 }, { 0, 2 }, { 0, 1 } };
+	int a, e;
+
+	for (a = 0; a < 3; a++) {
+		int u = across[a][0], v = across[a][1], up = t->turn[a] > 0;
+
+		if (t->turn[a] == 0)
+			continue;
+		for (e = 0; e < 3; e++) {
+			const double *p = t->c[e], *q = t->c[e == 2 ? 0 : e + 1];
+			double ku, kv, l, r, det, bound;
+			int sign;
+
+			/*
+			 * The box corner k where cross(q - p, k - p), L.(k -
+			 * p) in the plane across a, is largest (the third
+			 * vertex's side positive) or smallest; the box is
+			 * apart when it is not past the edge's line toward
+			 * the third vertex.
+			 */
+			ku = (p[v] > q[v]) == up ? hi[u] : lo[u];
+			kv = (q[u] > p[u]) == up ? hi[v] : lo[v];
+			l = (q[u] - p[u]) * (p[v] - kv);
+			r = (q[v] - p[v]) * (p[u] - ku);
+			det = l - r, bound = CROSS_BOUND * (fabs(l) + fabs(r));
+			if (det > bound)
+				sign = 1;
+			else if (-det > bound)
+				sign = -1;
+			else {
+				double k[3];
+
+				k[a] = 0, k[u] = ku, k[v] = kv;
+				sign = crossdir3(t->v[e], t->v[e == 2 ? 0 :
+				    e + 1], pt3(k[0], k[1], k[2]), t->v[e], a);
+			}
+			if (sign * t->turn[a] >= 0)
+				return 1;
+		}
+	}
+	return 0;
+}
+
+/*
+ * Whether triangle t meets the open box lo..hi: no axis of the separating
+ * axis theorem parts them.  o is planeapart's.
  */
 static int
 meetsbox(const struct tri *t, const double lo[3], const double hi[3],
-    signed char o[8])
+    signed char *o)
 {
-	signed char own[8];
-	int a, c, e, pos = 0, neg = 0;
+	int a, c;
 
 	for (a = 0; a < 3; a++)
 		if (t->hi[a] <= lo[a] || t->lo[a] >= hi[a])
@@ -164,55 +293,7 @@ meetsbox(const struct tri *t, const double lo[3], const double hi[3],
 		if (t->v[c].x > lo[0] && t->v[c].x < hi[0] && t->v[c].y > lo[1] &&
 		    t->v[c].y < hi[1] && t->v[c].z > lo[2] && t->v[c].z < hi[2])
 			return 1;
-	if (o == NULL) {
-		memset(own, 2, sizeof(own));
-		o = own;
-	}
-	for (c = 0; c < 8; c++) {
-		if (o[c] == 2)
-			o[c] = orient3d(t->v[0], t->v[1], t->v[2], pt3(c & 1 ?
-			    hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ?
-			    hi[2] : lo[2]));
-		pos |= o[c] > 0;
-		neg |= o[c] < 0;
-	}
-	if (!pos || !neg)
-		return 0;
-	for (e = 0; e < 3; e++) {
-		struct point3 p = t->v[e], q = t->v[(e + 1) % 3];
-		struct point3 r = t->v[(e + 2) % 3];
-
-		for (a = 0; a < 3; a++) {
-			int u = a == 0 ? 1 : 0, v = a == 2 ? 1 : 2;
-			double top[3], bot[3];
-			struct point3 kmax, kmin;
-
-			if (coord(p, u) == coord(q, u) &&
-			    coord(p, v) == coord(q, v))
-				continue;	/* the edge runs along the axis */
-			/*
-			 * L = (p_v - q_v, q_u - p_u) in the plane across a,
-			 * the signs of its parts exact: the box's corners
-			 * where L.k is largest and smallest.  The box and the
-			 * triangle's projections on L part, touching at most,
-			 * when L.(t - k) >= 0 for t = p, r at the largest,
-			 * or <= 0 at the smallest.
-			 */
-			top[a] = bot[a] = 0;
-			top[u] = coord(p, v) > coord(q, v) ? hi[u] : lo[u];
-			bot[u] = coord(p, v) > coord(q, v) ? lo[u] : hi[u];
-			top[v] = coord(q, u) > coord(p, u) ? hi[v] : lo[v];
-			bot[v] = coord(q, u) > coord(p, u) ? lo[v] : hi[v];
-			kmax = pt3(top[0], top[1], top[2]);
-			kmin = pt3(bot[0], bot[1], bot[2]);
-			if ((crosssign(p, q, kmax, p, a, u, v) >= 0 &&
-			    crosssign(p, q, kmax, r, a, u, v) >= 0) ||
-			    (crosssign(p, q, kmin, p, a, u, v) <= 0 &&
-			    crosssign(p, q, kmin, r, a, u, v) <= 0))
-				return 0;
-		}
-	}
-	return 1;
+	return !planeapart(t, lo, hi, o) && !edgesapart(t, lo, hi);
 }
 
 static int
@@ -239,9 +320,13 @@ split3_root(struct splitter3 *sp, int *inside)
 		hi[a] = lo[a] + sp->u.size;
 	*inside = rootparity(sp);
 	reserve(sp, 0, sp->ntris);
-	for (i = 0; i < sp->ntris; i++)
-		if (meetsbox(&sp->tris[i], lo, hi, NULL))
+	for (i = 0; i < sp->ntris; i++) {
+		signed char o[27];
+
+		memset(o, 2, sizeof(o));
+		if (meetsbox(&sp->tris[i], lo, hi, o))
 			sp->list[0].tris[n++] = i;
+	}
 	return n;
 }
 
@@ -295,23 +380,16 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 			}
 		}
 		for (q = 0; q < 8; q++) {
-			int bx = q & 1, by = q >> 1 & 1, bz = q >> 2, c;
+			int bx = q & 1, by = q >> 1 & 1, bz = q >> 2;
 			double lo[3], hi[3];
-			signed char o[8];
 
 			if (!in[0][bx] || !in[1][by] || !in[2][bz])
 				continue;
 			lo[0] = g[0][bx], hi[0] = g[0][bx + 1];
 			lo[1] = g[1][by], hi[1] = g[1][by + 1];
 			lo[2] = g[2][bz], hi[2] = g[2][bz + 1];
-			for (c = 0; c < 8; c++)
-				o[c] = s[9 * (bz + (c >> 2)) + 3 * (by +
-				    (c >> 1 & 1)) + bx + (c & 1)];
-			if (meetsbox(t, lo, hi, o))
+			if (meetsbox(t, lo, hi, &s[9 * bz + 3 * by + bx]))
 				m |= 1 << q;
-			for (c = 0; c < 8; c++)
-				s[9 * (bz + (c >> 2)) + 3 * (by + (c >> 1 & 1)) +
-				    bx + (c & 1)] = o[c];
 		}
 		mask[j] = m;
 		/* the paths: child q's point from child from[q]'s */

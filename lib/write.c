@@ -481,6 +481,19 @@ qt_op(const struct qtop *op)
 	recorded(p);
 }
 
+/* For write3.c: room(), recorded(). */
+char *
+qt_room(size_t n)
+{
+	return room(n);
+}
+
+void
+qt_recorded(const char *end)
+{
+	recorded(end);
+}
+
 /* For write3.c: bytes of k records. */
 void
 qt_putrecords(const char *s, size_t n, unsigned long long k)

@@ -76,7 +76,7 @@ qt3_shell(const struct shell *g)
 struct text3 {
 	uint64_t	 key;		/* index + 1; 0 when empty */
 	size_t		 ilen, len;
-	char		 itext[24], text[32];
+	char		 itext[24], text[32];	/* copied whole */
 };
 
 static struct {
@@ -99,11 +99,21 @@ text3(const struct universe3 *u, int level, int axis, uint64_t i)
 	return t;
 }
 
+/* Fixed sizes compile to a few moves; the excess is overwritten. */
 static char *
-put3(char *p, const struct text3 *t, int index)
+putindex(char *p, const struct text3 *t)
 {
-	memcpy(p, index ? t->itext : t->text, index ? t->ilen : t->len);
-	return p + (index ? t->ilen : t->len);
+	memcpy(p, t->itext, sizeof(t->itext));
+	p[t->ilen] = ' ';
+	return p + t->ilen + 1;
+}
+
+static char *
+putcoord(char *p, const struct text3 *t)
+{
+	memcpy(p, t->text, sizeof(t->text));
+	p[t->len] = ' ';
+	return p + t->len + 1;
 }
 
 /* The cache kept for universe u, emptied when it held another's. */
@@ -122,40 +132,43 @@ void
 qt3_cell(const struct universe3 *u, const struct cell3 *c)
 {
 	const struct text3 *x, *y, *z;
-	char buf[256], *p;
+	char *p;
 
 	cacheuniverse(u);
 	x = text3(u, c->level, 0, c->ix);
 	y = text3(u, c->level, 1, c->iy);
 	z = text3(u, c->level, 2, c->iz);
-	p = stpcpy(buf, c->class ? "leaf " : "node ");
-	p = stpcpy(p, c->level > 0 ? c->path : ".");
+	/* a path, 3 integers and 4 reals, their room copied whole */
+	p = qt_room(QT_MAXLEVEL + 256);
+	memcpy(p, c->class ? "leaf " : "node ", 5);
+	p += 5;
+	if (c->level > 0) {
+		memcpy(p, c->path, c->level);
+		p += c->level;
+	} else
+		*p++ = '.';
 	*p++ = ' ';
-	p = fmtint(p, c->level);
+	if (c->level >= 10)
+		*p++ = '0' + c->level / 10;
+	*p++ = '0' + c->level % 10;
 	*p++ = ' ';
-	p = put3(p, x, 1);
-	*p++ = ' ';
-	p = put3(p, y, 1);
-	*p++ = ' ';
-	p = put3(p, z, 1);
-	*p++ = ' ';
-	p = put3(p, x, 0);
-	*p++ = ' ';
-	p = put3(p, y, 0);
-	*p++ = ' ';
-	p = put3(p, z, 0);
-	*p++ = ' ';
-	p = put3(p, text3(u, c->level, 3, 1), 0);
-	if (c->class) {
-		*p++ = ' ';
+	p = putindex(p, x);
+	p = putindex(p, y);
+	p = putindex(p, z);
+	p = putcoord(p, x);
+	p = putcoord(p, y);
+	p = putcoord(p, z);
+	p = putcoord(p, text3(u, c->level, 3, 1));
+	if (c->class)
 		*p++ = c->class;
-	}
+	else
+		p--;
 	if (c->class && c->id > 0) {
 		*p++ = ' ';
 		p = fmtint(p, (long long)c->id);
 	}
 	*p++ = '\n';
-	qt_putrecords(buf, p - buf, 1);
+	qt_recorded(p);
 }
 
 /*
@@ -167,19 +180,19 @@ void
 qt3_cornervertex(const struct universe3 *u, unsigned long long id,
     int level, uint64_t ix, uint64_t iy, uint64_t iz)
 {
-	char buf[160], *p;
+	char *p;
 
 	cacheuniverse(u);
-	p = stpcpy(buf, "vertex ");
-	p = fmtint(p, (long long)id);
+	/* an integer and 3 reals, their room copied whole */
+	p = qt_room(160);
+	memcpy(p, "vertex ", 7);
+	p = fmtint(p + 7, (long long)id);
 	*p++ = ' ';
-	p = put3(p, text3(u, level, 0, ix), 0);
-	*p++ = ' ';
-	p = put3(p, text3(u, level, 1, iy), 0);
-	*p++ = ' ';
-	p = put3(p, text3(u, level, 2, iz), 0);
-	*p++ = '\n';
-	qt_putrecords(buf, p - buf, 1);
+	p = putcoord(p, text3(u, level, 0, ix));
+	p = putcoord(p, text3(u, level, 1, iy));
+	p = putcoord(p, text3(u, level, 2, iz));
+	p[-1] = '\n';
+	qt_recorded(p);
 }
 
 /* A record as read: a shell with its v and f records, else one line. */

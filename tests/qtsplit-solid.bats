@@ -157,6 +157,12 @@ pathto() {
 	PY
 }
 
+@test "a face through decimal points, an ulp off the grid's points: the octrees are the oracle's" {
+	# the rounded plane's value at a grid point is a few ulps from its
+	# exact value: classing by it without its error bound goes wrong
+	oracle decimal-tetra.off "3 4 5" 0,0,0,1 -0.5,-0.5,-0.5,2
+}
+
 @test "level 50: subtrees past double precision are the oracle's" {
 	# the tetrahedron's slanted face x + y + z = 1 at (1/3, 1/3, 1/3) and
 	# (1/5, 3/5, 1/5), and its edge from (1, 0, 0) to (0, 0, 1), in the
