@@ -1,15 +1,17 @@
 /*
  * The vertices of a mesh of cells, numbered 1, 2, ... in order of first
  * use, as integer points of the grid at level QT_GRID: two corners are one
- * vertex exactly when they are the same point.
+ * vertex exactly when they are the same point.  Squares' corners have z 0;
+ * cubes' (corner_at3, corner_id3) have three coordinates.
  *
- * Cells are meshed in preorder, which is Z order of their lower left
- * corners, and a cell can use only points of its closed square, none of
- * them before its lower left corner in Z order (Z order is monotone in
- * each coordinate).  So once the cell being meshed starts after a point in
- * Z order, that point is never asked for again: the table of live points
- * drops it when it next fills, and stays as small as the front of the
- * sweep.  What may be kept for good is each vertex's grid point, 16 bytes.
+ * Cells are meshed in preorder, which is Z order of their lowest corners
+ * (z the highest bit of a path digit, then y, then x), and a cell can use
+ * only points of its closed square or cube, none of them before its
+ * lowest corner in Z order (Z order is monotone in each coordinate).  So
+ * once the cell being meshed starts after a point in Z order, that point
+ * is never asked for again: the table of live points drops it when it
+ * next fills, and stays as small as the front of the sweep.  What may be
+ * kept for good is each 2D vertex's grid point, 16 bytes.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -19,7 +21,7 @@
 #include "inline.h"
 
 struct live {
-	uint64_t	x, y;
+	uint64_t	x, y, z;
 	uint32_t	id;
 };
 
@@ -29,35 +31,45 @@ struct corners {
 	uint32_t	*slot;	/* 1 + the index in live, 0 free; half full at most */
 	size_t		 cap;	/* of slot, a power of 2; live has half */
 	int		 shift;		/* 64 - log2 cap, for slotof */
-	uint64_t	 atx, aty;	/* the lower left of the current cell */
+	uint64_t	 atx, aty, atz;	/* the lowest corner of the current cell */
 	int		 keep;		/* whether pt is kept */
 	uint64_t	(*pt)[2];	/* grid point of vertex i + 1 */
 	size_t		 npt, ptcap;
 };
 
+/* Is the highest bit set in a lower than the highest in b? */
+static int
+msbless(uint64_t a, uint64_t b)
+{
+	return (a < b) & (a < (a ^ b));
+}
+
 /*
- * Is (ax, ay) before (bx, by) in Z order, y the higher bit of a digit?
- * cell_cmp at one level, written out, and without branches: it runs for
- * every live point at every rebuild, on points in no order.
+ * Is a before b in Z order, z the highest bit of a digit, then y?  The
+ * axis of the highest bit where they differ decides, z's on a tie, then
+ * y's: cell_cmp at one level, written out, and without branches, since it
+ * runs for every live point at every rebuild, on points in no order.
  */
 static int
-zbefore(uint64_t ax, uint64_t ay, uint64_t bx, uint64_t by)
+zbefore(const struct live *a, uint64_t bx, uint64_t by, uint64_t bz)
 {
-	uint64_t dx = ax ^ bx, dy = ay ^ by;
-	int xhigher = (dy < dx) & (dy < (dx ^ dy));
+	uint64_t dx = a->x ^ bx, dy = a->y ^ by, dz = a->z ^ bz;
+	int yhigher = msbless(dz, dy), xhigher;
 
-	return xhigher ? ax < bx : ay < by;
+	xhigher = msbless(yhigher ? dy : dz, dx);
+	return xhigher ? a->x < bx : yhigher ? a->y < by : a->z < bz;
 }
 
 /*
  * Grid points of coarse cells end in many zero bits, which a product
  * keeps: the slot is taken from the high bits of the products.
  */
-static size_t
-slotof(const struct corners *t, uint64_t x, uint64_t y)
+static INLINE size_t
+slotof(const struct corners *t, uint64_t x, uint64_t y, uint64_t z)
 {
 	return (x * UINT64_C(0x9E3779B97F4A7C15) ^
-	    y * UINT64_C(0xC2B2AE3D27D4EB4F)) >> t->shift;
+	    y * UINT64_C(0xC2B2AE3D27D4EB4F) ^
+	    z * UINT64_C(0x165667B19E3779F9)) >> t->shift;
 }
 
 static void
@@ -71,13 +83,14 @@ setcap(struct corners *t, size_t cap)
 		t->shift--;
 }
 
-/* The free slot for (x, y), which is not in the table. */
+/* The free slot for (x, y, z), which is not in the table. */
 static size_t
-freeslot(const struct corners *t, uint64_t x, uint64_t y)
+freeslot(const struct corners *t, uint64_t x, uint64_t y, uint64_t z)
 {
 	size_t k;
 
-	for (k = slotof(t, x, y); t->slot[k] != 0; k = (k + 1) & (t->cap - 1))
+	for (k = slotof(t, x, y, z); t->slot[k] != 0;
+	    k = (k + 1) & (t->cap - 1))
 		;
 	return k;
 }
@@ -86,7 +99,9 @@ freeslot(const struct corners *t, uint64_t x, uint64_t y)
 static void
 put(struct corners *t, size_t i)
 {
-	t->slot[freeslot(t, t->live[i].x, t->live[i].y)] = (uint32_t)i + 1;
+	const struct live *v = &t->live[i];
+
+	t->slot[freeslot(t, v->x, v->y, v->z)] = (uint32_t)i + 1;
 }
 
 /*
@@ -101,7 +116,7 @@ rebuild(struct corners *t)
 
 	for (i = 0; i < t->n; i++) {
 		t->live[n] = t->live[i];
-		n += !zbefore(t->live[i].x, t->live[i].y, t->atx, t->aty);
+		n += !zbefore(&t->live[i], t->atx, t->aty, t->atz);
 	}
 	t->n = n;
 	for (cap = t->cap; 8 * (n + 1) > cap; cap *= 2)
@@ -141,23 +156,33 @@ corner_free(struct corners *t)
 	free(t);
 }
 
-/* The cell being meshed now starts at grid point (x, y). */
+/* The cell being meshed now starts at grid point (x, y, z). */
 void
-corner_at(struct corners *t, uint64_t x, uint64_t y)
+corner_at3(struct corners *t, uint64_t x, uint64_t y, uint64_t z)
 {
 	t->atx = x;
 	t->aty = y;
+	t->atz = z;
 }
 
-/* A new vertex at (x, y), which slot k is free for unless the table is full. */
+void
+corner_at(struct corners *t, uint64_t x, uint64_t y)
+{
+	corner_at3(t, x, y, 0);
+}
+
+/*
+ * A new vertex at (x, y, z), which slot k is free for unless the table is
+ * full.
+ */
 static NOINLINE uint32_t
-newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y)
+newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y, uint64_t z)
 {
 	struct live *v;
 
 	if (2 * (t->n + 1) > t->cap) {
 		rebuild(t);
-		k = freeslot(t, x, y);
+		k = freeslot(t, x, y, z);
 	}
 	if (t->npt == UINT32_MAX)
 		die(1, "more than %lu vertices", (unsigned long)UINT32_MAX);
@@ -172,44 +197,64 @@ newpoint(struct corners *t, size_t k, uint64_t x, uint64_t y)
 	v = &t->live[t->n];
 	v->x = x;
 	v->y = y;
+	v->z = z;
 	v->id = ++t->npt;
 	t->slot[k] = (uint32_t)++t->n;
 	return v->id;
 }
 
-/* The slot of the point at (x, y), or the free slot where it would go. */
-static size_t
-lookup(const struct corners *t, uint64_t x, uint64_t y)
+/*
+ * The slot of the point at (x, y, z), or the free slot where it would
+ * go.
+ */
+static INLINE size_t
+lookup(const struct corners *t, uint64_t x, uint64_t y, uint64_t z)
 {
+	const struct live *v;
 	size_t k;
 	uint32_t j;
 
-	for (k = slotof(t, x, y); (j = t->slot[k]) != 0;
-	    k = (k + 1) & (t->cap - 1))
-		if (t->live[j - 1].x == x && t->live[j - 1].y == y)
+	for (k = slotof(t, x, y, z); (j = t->slot[k]) != 0;
+	    k = (k + 1) & (t->cap - 1)) {
+		v = &t->live[j - 1];
+		if (v->x == x && v->y == y && v->z == z)
 			break;
+	}
 	return k;
 }
 
 /*
- * The number of the vertex at grid point (x, y); a new one is numbered.
- * The table drops the points behind the sweep when it fills, which no
- * cell asks for again.
+ * The number of the vertex at grid point (x, y, z); a new one is
+ * numbered.  The table drops the points behind the sweep when it fills,
+ * which no cell asks for again.
  */
+static INLINE uint32_t
+idof(struct corners *t, uint64_t x, uint64_t y, uint64_t z)
+{
+	size_t k = lookup(t, x, y, z);
+
+	return t->slot[k] != 0 ? t->live[t->slot[k] - 1].id :
+	    newpoint(t, k, x, y, z);
+}
+
+uint32_t
+corner_id3(struct corners *t, uint64_t x, uint64_t y, uint64_t z)
+{
+	return idof(t, x, y, z);
+}
+
+/* The same at z 0, the lookup inlined for a plane's points. */
 uint32_t
 corner_id(struct corners *t, uint64_t x, uint64_t y)
 {
-	size_t k = lookup(t, x, y);
-
-	return t->slot[k] != 0 ? t->live[t->slot[k] - 1].id :
-	    newpoint(t, k, x, y);
+	return idof(t, x, y, 0);
 }
 
 /* The number of the vertex at (x, y) if it has one and is live, else 0. */
 uint32_t
 corner_find(const struct corners *t, uint64_t x, uint64_t y)
 {
-	size_t k = lookup(t, x, y);
+	size_t k = lookup(t, x, y, 0);
 
 	return t->slot[k] != 0 ? t->live[t->slot[k] - 1].id : 0;
 }
@@ -220,7 +265,7 @@ corner_count(const struct corners *t)
 	return t->npt;
 }
 
-/* The grid point of vertex id, from 1. */
+/* The grid point of 2D vertex id, from 1. */
 void
 corner_point(const struct corners *t, uint32_t id, uint64_t *x,
     uint64_t *y)

@@ -236,11 +236,15 @@ int	 cellset_next(int, uint64_t, uint64_t, int, int, uint64_t *,
  * QT_GRID, numbered 1, 2, ... in order of first use by cells meshed in
  * preorder; corner_at says where the current cell starts, which lets the
  * points behind it go.  corner_find gives 0 for a point not numbered.
+ * corner_at3 and corner_id3 are the same for cubes, whose corners have a
+ * z; corner_find and corner_point are for squares' corners (z 0) only.
  */
 struct corners *corner_new(int);
 void	 corner_free(struct corners *);
 void	 corner_at(struct corners *, uint64_t, uint64_t);
 uint32_t corner_id(struct corners *, uint64_t, uint64_t);
+void	 corner_at3(struct corners *, uint64_t, uint64_t, uint64_t);
+uint32_t corner_id3(struct corners *, uint64_t, uint64_t, uint64_t);
 uint32_t corner_find(const struct corners *, uint64_t, uint64_t);
 size_t	 corner_count(const struct corners *);
 void	 corner_point(const struct corners *, uint32_t, uint64_t *,
@@ -585,6 +589,8 @@ void	 qt3_universe(const struct universe3 *);
 void	 qt3_shell(const struct shell *);
 void	 qt3_cell(const struct universe3 *, const struct cell3 *);
 void	 qt3_echo(const struct qt3rec *);
+void	 qt3_cornervertex(const struct universe3 *, unsigned long long, int,
+	    uint64_t, uint64_t, uint64_t);
 
 /*
  * split3.c: the exact classifier of 3D cells, as split.c's for 2D: a

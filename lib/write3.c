@@ -116,6 +116,17 @@ putcoord(char *p, const struct text3 *t)
 	return p + t->len + 1;
 }
 
+/* The cache kept for universe u, emptied when it held another's. */
+static void
+cacheuniverse(const struct universe3 *u)
+{
+	if (cache3.u.x0 != u->x0 || cache3.u.y0 != u->y0 ||
+	    cache3.u.z0 != u->z0 || cache3.u.size != u->size) {
+		memset(cache3.t, 0, sizeof(cache3.t));
+		cache3.u = *u;
+	}
+}
+
 /* A cell of the universe u: its corner and size computed, not taken. */
 void
 qt3_cell(const struct universe3 *u, const struct cell3 *c)
@@ -123,11 +134,7 @@ qt3_cell(const struct universe3 *u, const struct cell3 *c)
 	const struct text3 *x, *y, *z;
 	char *p;
 
-	if (cache3.u.x0 != u->x0 || cache3.u.y0 != u->y0 ||
-	    cache3.u.z0 != u->z0 || cache3.u.size != u->size) {
-		memset(cache3.t, 0, sizeof(cache3.t));
-		cache3.u = *u;
-	}
+	cacheuniverse(u);
 	x = text3(u, c->level, 0, c->ix);
 	y = text3(u, c->level, 1, c->iy);
 	z = text3(u, c->level, 2, c->iz);
@@ -161,6 +168,30 @@ qt3_cell(const struct universe3 *u, const struct cell3 *c)
 		p = fmtint(p, (long long)c->id);
 	}
 	*p++ = '\n';
+	qt_recorded(p);
+}
+
+/*
+ * Mesh vertex id at corner (ix, iy, iz) of the cells at level of the
+ * universe u: the coordinates are those of the cells' corners, the same
+ * doubles whatever level the corner is reached from (qtleaves.c says why).
+ */
+void
+qt3_cornervertex(const struct universe3 *u, unsigned long long id,
+    int level, uint64_t ix, uint64_t iy, uint64_t iz)
+{
+	char *p;
+
+	cacheuniverse(u);
+	/* an integer and 3 reals, their room copied whole */
+	p = qt_room(160);
+	memcpy(p, "vertex ", 7);
+	p = fmtint(p + 7, (long long)id);
+	*p++ = ' ';
+	p = putcoord(p, text3(u, level, 0, ix));
+	p = putcoord(p, text3(u, level, 1, iy));
+	p = putcoord(p, text3(u, level, 2, iz));
+	p[-1] = '\n';
 	qt_recorded(p);
 }
 

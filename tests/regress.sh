@@ -138,6 +138,7 @@ cases() {
 		echo "$b.polyread|polyread $f"
 		echo "$b.qtsplit|polyread -u -1.5,-1.25,-1,8 $f | qtsplit -l 4"
 		echo "$b.qtsplit-m|polyread -u -1.5,-1.25,-1,8 $f | qtsplit -l 4 -m 2 -r 0"
+		echo "$b.qtleaves-n|polyread -u -1.5,-1.25,-1,8 $f | qtsplit -l 3 | qtleaves -n -c FEP"
 		echo "$b.qtstats|polyread -u -1.5,-1.25,-1,8 $f | qtsplit -l 5 | qtstats -l"
 		echo "$b.qt2svg|polyread -u -1.5,-1.25,-1,8 $f | qtsplit -l 4 | qt2svg -w 300"
 		echo "$b.qt2svg-z|polyread -u -1.5,-1.25,-1,8 $f | qtsplit -l 4 | qt2svg -w 300 -z 0.5"

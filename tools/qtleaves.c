@@ -65,6 +65,45 @@ meshleaf(const struct cell *c, int kept, unsigned long long id)
 	qt_elem(id, "quad", 4, v);
 }
 
+/*
+ * A cube's corners in the order of its hex element, that of VTK's and
+ * Gmsh's hexahedron: the lower face counter-clockwise seen from +z from
+ * the lowest corner, then the upper face likewise.  The edges from the
+ * first corner to the second, fourth and fifth run along +x, +y and +z,
+ * a right-handed frame, so the element's Jacobian is positive.
+ */
+static const int hexdx[8] = { 0, 1, 1, 0, 0, 1, 1, 0 };
+static const int hexdy[8] = { 0, 0, 1, 1, 0, 0, 1, 1 };
+static const int hexdz[8] = { 0, 0, 0, 0, 1, 1, 1, 1 };
+
+/*
+ * meshleaf for a cube: every leaf moves the Z order position on, a kept
+ * one numbers its eight corners and writes them as it does in 2D.
+ */
+static void
+meshleaf3(const struct universe3 *u, const struct cell3 *c, int kept)
+{
+	int shift = QT_GRID - c->level, k;
+	uint64_t x = c->ix << shift, y = c->iy << shift, z = c->iz << shift;
+	uint64_t s = (uint64_t)1 << shift;
+	unsigned long long v[8];
+	static unsigned long long numbered;	/* vertices so far */
+
+	corner_at3(corners, x, y, z);
+	if (!kept)
+		return;
+	for (k = 0; k < 8; k++) {
+		v[k] = corner_id3(corners, x + hexdx[k] * s, y + hexdy[k] * s,
+		    z + hexdz[k] * s);
+		if (v[k] > numbered) {
+			numbered = v[k];
+			qt3_cornervertex(u, v[k], c->level, c->ix + hexdx[k],
+			    c->iy + hexdy[k], c->iz + hexdz[k]);
+		}
+	}
+	qt_elem(c->id, "hex", 8, v);
+}
+
 enum format { QTREE, GEOJSON, WKT };
 
 /* A leaf's shape for GIS tools: loops of points, outer ones first. */
@@ -271,10 +310,19 @@ leaf(struct qtreader *r, const struct options *o, const struct universe *u,
 }
 
 /*
- * A 3D stream (qtree(5), Solids): its leaves kept and numbered as in 2D;
- * the head written again, the nodes dropped.  Corners, fractions and
- * shapes are 2D ideas (squares, polygons), refused as usage errors.
+ * A 3D stream (qtree(5), Solids): its leaves kept and numbered as in 2D,
+ * with -n their mesh of hexahedra; the head written again, the nodes
+ * dropped.  Fractions and shapes are 2D ideas (areas, polygons), refused
+ * as usage errors.
  */
+/* Is the line of n bytes a vertex or elem record? */
+static int
+ismesh(const char *line, size_t n)
+{
+	return (n > 7 && strncmp(line, "vertex ", 7) == 0) ||
+	    (n > 5 && strncmp(line, "elem ", 5) == 0);
+}
+
 static int
 leaves3(struct qtreader *r, const struct options *o)
 {
@@ -282,6 +330,7 @@ leaves3(struct qtreader *r, const struct options *o)
 	struct qt3rec rec;
 	struct universe3 u = { 0, 0, 0, 1 };
 	unsigned long long id = 0;
+	int kept;
 
 	if (o->format != QTREE)
 		die(2, "-f %s: a 3D stream's leaves are cubes, not polygons; "
@@ -290,8 +339,6 @@ leaves3(struct qtreader *r, const struct options *o)
 	if (o->aflag)
 		die(2, "-a: volume fractions of a 3D stream's leaves are not "
 		    "computed");
-	if (o->nflag)
-		die(2, "-n: a mesh of a 3D stream's leaves is not written");
 	s = qt3_open(r);
 	qt3_header();
 	while (qt3_read(s, &rec) != QT_EOF)
@@ -309,12 +356,19 @@ leaves3(struct qtreader *r, const struct options *o)
 		case QT_NODE:
 			break;
 		case QT_LEAF:
-			if (o->keep & CELL_CLASSBIT(rec.c.class)) {
+			kept = (o->keep & CELL_CLASSBIT(rec.c.class)) != 0;
+			if (kept) {
 				rec.c.id = ++id;
 				qt3_cell(&u, &rec.c);
 			}
+			if (o->nflag)
+				meshleaf3(&u, &rec.c, kept);
 			break;
 		default:
+			if (ismesh(rec.line, rec.len))
+				qt_fail(r, "the input already holds a mesh "
+				    "(%.*s record): qtleaves reads a tree",
+				    rec.line[0] == 'e' ? 4 : 6, rec.line);
 			qt3_echo(&rec);
 			break;
 		}
