@@ -877,6 +877,25 @@ qt_rawline(struct qtreader *r, size_t *len)
 	return line;
 }
 
+/*
+ * For read3.c's fast way: the unread input, from the next line on, with
+ * a NUL at *limit; qt_skipline takes its first n bytes and their newline
+ * as a line read.
+ */
+char *
+qt_unread(struct qtreader *r, const char **limit)
+{
+	*limit = r->buf + r->end;
+	return r->buf + r->pos;
+}
+
+void
+qt_skipline(struct qtreader *r, size_t n)
+{
+	r->pos += n + 1;
+	r->lineno++;
+}
+
 long
 qt_lineno(const struct qtreader *r)
 {

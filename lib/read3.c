@@ -422,25 +422,27 @@ puttext(char *t, const struct coordtext *k, int index)
 
 /*
  * The common record, a cell spelled as the writers spell it, checked in
- * one pass over the line's len bytes: its path against the last cell's,
+ * one pass over its bytes from line: its path against the last cell's,
  * its column, row and layer from the prefixes they share, and the rest
- * against the texts the writers would print.  Returns 1 when the line is
- * such a cell, with what cellrec would give; 0 for anything else, which
- * takes the long way (cellrec) and its messages.
+ * against the texts the writers would print.  The line is one of its own
+ * that ends at end (whole), or the next line of the input, which must end
+ * in a newline before end; a NUL stands at end.  Returns the length of
+ * the line, cut at its end, with what cellrec would give; 0 for anything
+ * else, which takes the long way (cellrec) and its messages.
  */
-static int
-fastcell3(struct qt3reader *s, struct qt3rec *rec, const char *line,
-    size_t len)
+static size_t
+fastcell3(struct qt3reader *s, struct qt3rec *rec, char *line,
+    const char *end, int whole)
 {
 	struct cell3 *c = &rec->c;
-	const char *p = line + 5, *end = line + len;
+	const char *p = line + 5;
 	const struct coordtext *kx, *ky, *kz, *ks;
 	int j, k, level;
 	unsigned d;
 	char *t;
 	size_t n;
 
-	if (len < 6 || !s->haveuniverse)
+	if (end - line < 6 || !s->haveuniverse)
 		return 0;
 	if (memcmp(line, "leaf ", 5) == 0)
 		rec->kind = QT_LEAF;
@@ -498,8 +500,9 @@ fastcell3(struct qt3reader *s, struct qt3rec *rec, const char *line,
 		if (*p == ' ' && (p = fastid(p + 1, &c->id)) == NULL)
 			return 0;
 	}
-	if (p != end)
+	if (whole ? p != end : *p != '\n')
 		return 0;
+	line[p - line] = '\0';
 	memcpy(s->path + k, line + 5 + k, level - k);
 	s->path[level] = '\0';
 	s->pathlen = level;
@@ -516,7 +519,7 @@ fastcell3(struct qt3reader *s, struct qt3rec *rec, const char *line,
 	c->y = ky->v;
 	c->z = kz->v;
 	c->size = ks->v;
-	return 1;
+	return p - line;
 }
 
 static void
@@ -551,12 +554,38 @@ report3(const struct qt3reader *s, int force)
 		progress(force, "%llu records read", s->count);
 }
 
+/* A cell that fastcell3 took, as qt3_read returns it. */
+static enum qtkind
+fastdone3(struct qt3reader *s, struct qt3rec *rec, const char *line,
+    size_t len)
+{
+	rec->line = line;
+	rec->len = len;
+	rec->lineno = qt_lineno(s->r);
+	rec->nrec = 1;
+	if ((++s->count & 0xfffff) == 0)
+		report3(s, 0);
+	return rec->kind;
+}
+
+/*
+ * The next record.  The common one, a cell as the writers spell it, is
+ * checked straight in the reader's buffer, its newline found as it is
+ * checked; anything else, and a cell the buffer does not hold whole,
+ * takes the long way a line at a time.
+ */
 enum qtkind
 qt3_read(struct qt3reader *s, struct qt3rec *rec)
 {
-	char *line;
+	const char *limit;
+	char *line = qt_unread(s->r, &limit);
 	size_t len, taglen;
 
+	if (!s->ended && (line[0] == 'l' || line[0] == 'n') &&
+	    (len = fastcell3(s, rec, line, limit, 0)) > 0) {
+		qt_skipline(s->r, len);
+		return fastdone3(s, rec, line, len);
+	}
 	for (;;) {
 		if ((line = qt_rawline(s->r, &len)) == NULL) {
 			if (!s->ended)
@@ -567,16 +596,8 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 		if (s->ended)
 			qt_fail(s->r, "data after the end record");
 		if ((line[0] == 'l' || line[0] == 'n') &&
-		    fastcell3(s, rec, line, len)) {
-			s->count++;
-			rec->line = line;
-			rec->len = len;
-			rec->lineno = qt_lineno(s->r);
-			rec->nrec = 1;
-			if ((s->count & 0xfffff) == 0)
-				report3(s, 0);
-			return rec->kind;
-		}
+		    fastcell3(s, rec, line, line + len, 1) > 0)
+			return fastdone3(s, rec, line, len);
 		taglen = strcspn(line, " ");
 		if (taglen == 3 && strncmp(line, "end", 3) == 0) {
 			endrec(s, line);

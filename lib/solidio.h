@@ -6,6 +6,8 @@
 
 /* read.c: lines and fields read and checked as 2D ones. */
 char	*qt_rawline(struct qtreader *, size_t *);
+char	*qt_unread(struct qtreader *, const char **);
+void	 qt_skipline(struct qtreader *, size_t);
 long	 qt_lineno(const struct qtreader *);
 int	 qt_flags(const struct qtreader *);
 double	 qt_realfield(struct qtreader *, const char *, const char *);

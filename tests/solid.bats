@@ -200,7 +200,7 @@ refusedeep() {
 	deep
 	sed "$1" deep.q3 > bad.q3
 	! cmp -s bad.q3 deep.q3
-	line=$(grep -n -E "$2" bad.q3 | tail -n 1 | cut -d: -f1)
+	line=$(grep -a -n -E "$2" bad.q3 | tail -n 1 | cut -d: -f1)
 	[ -n "$line" ]
 	for p in "$SOLIDCAT" qtstats qtleaves qt2svg; do
 		run -1 --separate-stderr "$p" bad.q3
@@ -362,4 +362,40 @@ refusedeep() {
 	qtstats -l odd.q3 | diff -u want -
 	qtleaves deep.q3 > want
 	qtleaves odd.q3 | diff -u want -
+}
+
+@test "a deep cell's line with a carriage return, a NUL or no newline is refused" {
+	refusedeep 's/^leaf 0013 .*/&\r/' '^leaf 0013 ' \
+	    "carriage return at end of line (CRLF line ends: remove them with tr -d '\\r')"
+	refusedeep 's/^leaf 0013 4 3 1 0 0 /leaf 0013 4 3 1 0 0\x00 /' '^leaf 0013 ' \
+	    "NUL byte in input"
+	refusedeep 's/^\(leaf 0013 .*\) P$/\1 P\x00/' '^leaf 0013 ' \
+	    "NUL byte in input"
+	# the stream cut after a cell, its newline too
+	deep
+	sed '/^leaf 0013 /q' deep.q3 | head -c -1 > cut.q3
+	n=$(wc -l < cut.q3)
+	run -1 --separate-stderr "$SOLIDCAT" cut.q3
+	[ "$stderr" = "solidcat: cut.q3:$((n + 1)): truncated stream: the last line has no newline" ]
+}
+
+@test "a stream longer than the reader's buffer reads alike spelled either way" {
+	# the octahedron at level 8: 1.2 MB of cells, which cross the 256 KB
+	# reads' ends; then every cell respelled, read the long way
+	polyread -u -1.5,-1.25,-1,8 "$SOLIDS/octa.off" | qtsplit -l 8 > big.q3
+	[ "$(wc -c < big.q3)" -gt 1000000 ]
+	awk '$1 == "node" || $1 == "leaf" { $4 = "+" $4 } { print }' big.q3 > odd.q3
+	[ "$(grep -c '^leaf [^ ]* [^ ]* +' odd.q3)" = "$(grep -c '^leaf ' big.q3)" ]
+	qtstats -l odd.q3 > want
+	qtstats -l big.q3 | diff -u want -
+	run -0 bash -c '"$0" odd.q3 | cmp - big.q3' "$SOLIDCAT"
+	run -0 bash -c 'qtleaves odd.q3 | cksum > want; qtleaves big.q3 | cksum | diff -u want -'
+}
+
+@test "a cell after the end record is refused" {
+	deep
+	n=$(wc -l < deep.q3)
+	{ cat deep.q3; grep '^leaf 0013 ' deep.q3; } > after.q3
+	run -1 --separate-stderr "$SOLIDCAT" after.q3
+	[ "$stderr" = "solidcat: after.q3:$((n + 1)): data after the end record" ]
 }
