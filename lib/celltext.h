@@ -1,16 +1,18 @@
 /*
- * celltext.h: the cell-text cache (celltext.c), for read.c and write.c:
- * the texts of cells' columns and rows, and of their x, y and size, as the
- * writers print them, kept per level and axis for the last few columns: in
- * preorder, neighbours share columns and rows, and children their
- * parent's, so few are ever formatted twice.  The reader compares fields
- * with them, the writer copies them.  Readers and writers of one universe
- * share one cache: a mesh's vertices are its cells' corners, and the text
- * a writer formats for a vertex is what the reader then finds for the next
- * cell in that column.  Sixteen columns a level and axis:
- * in Z order a level's cells come back to a column after blocks of
- * columns to its right, and with eight the cells of a level-16 tree along
- * a curve formatted twice as many coordinates; a level has one size.
+ * celltext.h: the cell-text cache (celltext.c), for read.c, read3.c and
+ * write.c: the texts of cells' columns and rows, and of their x, y and
+ * size, as the writers print them, kept per level and axis for the last
+ * few columns: in preorder, neighbours share columns and rows, and
+ * children their parent's, so few are ever formatted twice.  The reader
+ * compares fields with them, the writer copies them.  Readers and writers
+ * of one universe share one cache: a mesh's vertices are its cells'
+ * corners, and the text a writer formats for a vertex is what the reader
+ * then finds for the next cell in that column.  A 3D universe takes two:
+ * its x and y as a square's, its z as the columns of the square z0 z0.
+ * Sixteen columns a level and axis: in Z order a level's cells come back
+ * to a column after blocks of columns to its right, and with eight the
+ * cells of a level-16 tree along a curve formatted twice as many
+ * coordinates; a level has one size.
  */
 #define NCOORD	16	/* columns kept per level and axis */
 #define COORDTEXT 32	/* room for fmtreal's text, copied whole */

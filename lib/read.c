@@ -390,41 +390,6 @@ fastpath(struct qtreader *r, const char **pp, const char *end, uint64_t *ix,
 	return j;
 }
 
-/* A level as the writers spell it, then a space. */
-static inline const char *
-fastlevel(const char *p, int level)
-{
-	if (level >= 10 && *p++ != '0' + level / 10)
-		return NULL;
-	if (p[0] != '0' + level % 10 || p[1] != ' ')
-		return NULL;
-	return p + 2;
-}
-
-/*
- * An element number as the writers spell it; returns where it stops, the
- * line's end when the line is well-formed.
- */
-static inline const char *
-fastid(const char *p, unsigned long long *id)
-{
-	unsigned long long v = 0;
-	const char *start = p;
-	unsigned d;
-
-	if (*p == '0')
-		return NULL;
-	for (; (d = (unsigned char)*p - '0') <= 9; p++) {
-		if (p - start == 18)
-			return NULL;
-		v = v * 10 + d;
-	}
-	if (p == start)
-		return NULL;
-	*id = v;
-	return p;
-}
-
 /*
  * The common record, a cell spelled as the writers spell it, checked in
  * one pass over its bytes from line: a line of its own that ends at
@@ -910,6 +875,25 @@ qt_rawline(struct qtreader *r, size_t *len)
 		checkline(r, line, *len);
 	} while (line[0] == '#');
 	return line;
+}
+
+/*
+ * For read3.c's fast way: the unread input, from the next line on, with
+ * a NUL at *limit; qt_skipline takes its first n bytes and their newline
+ * as a line read.
+ */
+char *
+qt_unread(struct qtreader *r, const char **limit)
+{
+	*limit = r->buf + r->end;
+	return r->buf + r->pos;
+}
+
+void
+qt_skipline(struct qtreader *r, size_t n)
+{
+	r->pos += n + 1;
+	r->lineno++;
 }
 
 long

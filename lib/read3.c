@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "qtree.h"
+#include "celltext.h"
 #include "num.h"
 #include "solidio.h"
 
@@ -30,6 +31,12 @@ struct qt3reader {
 	int		 opterm[NFIELD3];
 	char		 path[QT_MAXLEVEL + 1];	/* the last cell's, "" root */
 	int		 pathlen, lastleaf;
+	/* the columns, rows and layers of the last path's prefixes */
+	uint64_t	 pathix[QT_MAXLEVEL + 1], pathiy[QT_MAXLEVEL + 1];
+	uint64_t	 pathiz[QT_MAXLEVEL + 1];
+	/* the texts of x, y and size (xy) and of z (axis 0 of zz) */
+	struct celltext	*xy, *zz;
+	char		 tail[256];	/* a cell's fields after its level */
 	int		 deepest;	/* the deepest cell's level, -1 before one */
 	struct shell	 shell;
 	size_t		 vcap, tcap;
@@ -56,6 +63,8 @@ qt3_close(struct qt3reader *s)
 	free(s->shell.v);
 	free(s->shell.t);
 	free(s->text);
+	celltext_close(s->xy);
+	celltext_close(s->zz);
 	free(s);
 }
 
@@ -106,6 +115,22 @@ keeptext(struct qt3reader *s, const char *line, size_t n)
 	s->textlen += n + 1;
 }
 
+/*
+ * The cell-text caches of the universe: x and y as a 2D universe's
+ * columns and rows, z as the columns of the square (z0, z0).
+ */
+static void
+opentext(struct qt3reader *s)
+{
+	struct universe xy = { s->u.x0, s->u.y0, s->u.size };
+	struct universe zz = { s->u.z0, s->u.z0, s->u.size };
+
+	celltext_close(s->xy);
+	celltext_close(s->zz);
+	s->xy = celltext_open(&xy);
+	s->zz = celltext_open(&zz);
+}
+
 static void
 universerec(struct qt3reader *s, struct qt3rec *rec)
 {
@@ -127,6 +152,7 @@ universerec(struct qt3reader *s, struct qt3rec *rec)
 	s->u = rec->u;
 	s->ulevels = univ3deepest(&s->u);
 	s->haveuniverse = 1;
+	opentext(s);
 }
 
 static void
@@ -281,6 +307,19 @@ oprec(struct qt3reader *s, struct qt3rec *rec)
 	s->haveop = 1;
 }
 
+/* The prefixes' columns, rows and layers of the last path, from depth k. */
+static void
+setprefixes(struct qt3reader *s, int k)
+{
+	for (; k < s->pathlen; k++) {
+		unsigned d = s->path[k] - '0';
+
+		s->pathix[k + 1] = s->pathix[k] << 1 | (d & 1);
+		s->pathiy[k + 1] = s->pathiy[k] << 1 | (d >> 1 & 1);
+		s->pathiz[k + 1] = s->pathiz[k] << 1 | d >> 2;
+	}
+}
+
 /*
  * node PATH LEVEL IX IY IZ X Y Z SIZE and leaf ... CLASS [ID], in preorder:
  * paths in the C locale's order, a cell never inside the leaf before it.
@@ -319,6 +358,7 @@ cellrec(struct qt3reader *s, struct qt3rec *rec)
 		s->deepest = level;
 	memcpy(s->path, p, level + 1);
 	s->pathlen = level;
+	setprefixes(s, 0);
 	s->lastleaf = rec->kind == QT_LEAF;
 	s->havecells = 1;
 	lim = ((unsigned long long)1 << level) - 1;
@@ -365,6 +405,123 @@ cellrec(struct qt3reader *s, struct qt3rec *rec)
 	}
 }
 
+/* Appends the text of an index (itext) or of a coordinate. */
+static inline char *
+puttext(char *t, const struct coordtext *k, int index)
+{
+	if (index) {
+		memcpy(t, k->itext, sizeof(k->itext));
+		t += k->ilen;
+	} else {
+		memcpy(t, k->text, sizeof(k->text));
+		t += k->len;
+	}
+	*t = ' ';
+	return t + 1;
+}
+
+/*
+ * The common record, a cell spelled as the writers spell it, checked in
+ * one pass over its bytes from line: its path against the last cell's,
+ * its column, row and layer from the prefixes they share, and the rest
+ * against the texts the writers would print.  The line is one of its own
+ * that ends at end (whole), or the next line of the input, which must end
+ * in a newline before end; a NUL stands at end.  Returns the length of
+ * the line, cut at its end, with what cellrec would give; 0 for anything
+ * else, which takes the long way (cellrec) and its messages.
+ */
+static size_t
+fastcell3(struct qt3reader *s, struct qt3rec *rec, char *line,
+    const char *end, int whole)
+{
+	struct cell3 *c = &rec->c;
+	const char *p = line + 5;
+	const struct coordtext *kx, *ky, *kz, *ks;
+	int j, k, level;
+	unsigned d;
+	char *t;
+	size_t n;
+
+	if (end - line < 6 || !s->haveuniverse)
+		return 0;
+	if (memcmp(line, "leaf ", 5) == 0)
+		rec->kind = QT_LEAF;
+	else if (memcmp(line, "node ", 5) == 0)
+		rec->kind = QT_NODE;
+	else
+		return 0;
+	if (p[0] == '.') {
+		if (p[1] != ' ' || s->havecells)
+			return 0;
+		k = level = 0;
+		p += 2;
+	} else {
+		k = cell_pathprefix(p, (int)(end - p), s->path, s->pathlen);
+		/* the prefixes past k are the new path's from here on */
+		for (j = k; j < QT_MAXLEVEL &&
+		    (d = (unsigned char)p[j] - '0') <= 7; j++) {
+			s->pathix[j + 1] = s->pathix[j] << 1 | (d & 1);
+			s->pathiy[j + 1] = s->pathiy[j] << 1 | (d >> 1 & 1);
+			s->pathiz[j + 1] = s->pathiz[j] << 1 | d >> 2;
+		}
+		if (j == 0 || p[j] != ' ' || j > s->ulevels)
+			return 0;
+		/* after the last cell in preorder, and not inside its leaf */
+		if (s->havecells && !(k == s->pathlen ? j > k &&
+		    !s->lastleaf : k < j && p[k] > s->path[k]))
+			return 0;
+		level = j;
+		p += j + 1;
+	}
+	if ((p = fastlevel(p, level)) == NULL)
+		return 0;
+	kx = celltext(s->xy, level, 0, s->pathix[level]);
+	ky = celltext(s->xy, level, 1, s->pathiy[level]);
+	kz = celltext(s->zz, level, 0, s->pathiz[level]);
+	ks = celltext(s->xy, level, 2, 0);
+	t = puttext(s->tail, kx, 1);
+	t = puttext(t, ky, 1);
+	t = puttext(t, kz, 1);
+	t = puttext(t, kx, 0);
+	t = puttext(t, ky, 0);
+	t = puttext(t, kz, 0);
+	t = puttext(t, ks, 0);
+	/* a node's ends before the space, a leaf's class follows it */
+	n = t - s->tail - (rec->kind == QT_NODE);
+	if ((size_t)(end - p) < n || memcmp(p, s->tail, n) != 0)
+		return 0;
+	p += n;
+	c->class = 0;
+	c->id = 0;
+	if (rec->kind == QT_LEAF) {
+		if (*p != 'F' && *p != 'E' && *p != 'P')
+			return 0;
+		c->class = *p++;
+		if (*p == ' ' && (p = fastid(p + 1, &c->id)) == NULL)
+			return 0;
+	}
+	if (whole ? p != end : *p != '\n')
+		return 0;
+	line[p - line] = '\0';
+	memcpy(s->path + k, line + 5 + k, level - k);
+	s->path[level] = '\0';
+	s->pathlen = level;
+	if (level > s->deepest)
+		s->deepest = level;
+	s->lastleaf = rec->kind == QT_LEAF;
+	s->havecells = 1;
+	c->level = level;
+	c->path = level > 0 ? s->path : ".";
+	c->ix = s->pathix[level];
+	c->iy = s->pathiy[level];
+	c->iz = s->pathiz[level];
+	c->x = kx->v;
+	c->y = ky->v;
+	c->z = kz->v;
+	c->size = ks->v;
+	return p - line;
+}
+
 static void
 endrec(struct qt3reader *s, const char *line)
 {
@@ -397,12 +554,38 @@ report3(const struct qt3reader *s, int force)
 		progress(force, "%llu records read", s->count);
 }
 
+/* A cell that fastcell3 took, as qt3_read returns it. */
+static enum qtkind
+fastdone3(struct qt3reader *s, struct qt3rec *rec, const char *line,
+    size_t len)
+{
+	rec->line = line;
+	rec->len = len;
+	rec->lineno = qt_lineno(s->r);
+	rec->nrec = 1;
+	if ((++s->count & 0xfffff) == 0)
+		report3(s, 0);
+	return rec->kind;
+}
+
+/*
+ * The next record.  The common one, a cell as the writers spell it, is
+ * checked straight in the reader's buffer, its newline found as it is
+ * checked; anything else, and a cell the buffer does not hold whole,
+ * takes the long way a line at a time.
+ */
 enum qtkind
 qt3_read(struct qt3reader *s, struct qt3rec *rec)
 {
-	char *line;
+	const char *limit;
+	char *line = qt_unread(s->r, &limit);
 	size_t len, taglen;
 
+	if (!s->ended && (line[0] == 'l' || line[0] == 'n') &&
+	    (len = fastcell3(s, rec, line, limit, 0)) > 0) {
+		qt_skipline(s->r, len);
+		return fastdone3(s, rec, line, len);
+	}
 	for (;;) {
 		if ((line = qt_rawline(s->r, &len)) == NULL) {
 			if (!s->ended)
@@ -412,6 +595,9 @@ qt3_read(struct qt3reader *s, struct qt3rec *rec)
 		}
 		if (s->ended)
 			qt_fail(s->r, "data after the end record");
+		if ((line[0] == 'l' || line[0] == 'n') &&
+		    fastcell3(s, rec, line, line + len, 1) > 0)
+			return fastdone3(s, rec, line, len);
 		taglen = strcspn(line, " ");
 		if (taglen == 3 && strncmp(line, "end", 3) == 0) {
 			endrec(s, line);

@@ -6,6 +6,8 @@
 
 /* read.c: lines and fields read and checked as 2D ones. */
 char	*qt_rawline(struct qtreader *, size_t *);
+char	*qt_unread(struct qtreader *, const char **);
+void	 qt_skipline(struct qtreader *, size_t);
 long	 qt_lineno(const struct qtreader *);
 int	 qt_flags(const struct qtreader *);
 double	 qt_realfield(struct qtreader *, const char *, const char *);
@@ -20,3 +22,41 @@ long long qt_intfield(struct qtreader *, const char *, const char *,
 void	 qt_putrecords(const char *, size_t, unsigned long long);
 char	*qt_room(size_t);
 void	 qt_recorded(const char *);
+
+/*
+ * read.c's fast way, which read3.c takes too: fields as the writers spell
+ * them.  A level, then a space.
+ */
+static inline const char *
+fastlevel(const char *p, int level)
+{
+	if (level >= 10 && *p++ != '0' + level / 10)
+		return NULL;
+	if (p[0] != '0' + level % 10 || p[1] != ' ')
+		return NULL;
+	return p + 2;
+}
+
+/*
+ * An element number as the writers spell it; returns where it stops, the
+ * line's end when the line is well-formed.
+ */
+static inline const char *
+fastid(const char *p, unsigned long long *id)
+{
+	unsigned long long v = 0;
+	const char *start = p;
+	unsigned d;
+
+	if (*p == '0')
+		return NULL;
+	for (; (d = (unsigned char)*p - '0') <= 9; p++) {
+		if (p - start == 18)
+			return NULL;
+		v = v * 10 + d;
+	}
+	if (p == start)
+		return NULL;
+	*id = v;
+	return p;
+}
