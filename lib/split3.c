@@ -372,6 +372,23 @@ split3_root(struct splitter3 *sp, int *inside)
 static const int from[8] = { 0, 0, 0, 1, 0, 1, 2, 3 };
 static const int ax[8] = { -1, 0, 1, 1, 2, 2, 2, 2 };
 
+/*
+ * The reach bits (split3_children's) path q needs: along its axis, the
+ * first half; across each other axis a, the plane of from[q]'s bit.
+ */
+#define PLANE(a, bit)	(1u << (3 * (a) + (bit)))
+#define HALF(a)		(1u << (3 * (a) + 2))
+static const unsigned pathreach[8] = {
+	0,
+	HALF(0) | PLANE(1, 0) | PLANE(2, 0),
+	HALF(1) | PLANE(0, 0) | PLANE(2, 0),
+	HALF(1) | PLANE(0, 1) | PLANE(2, 0),
+	HALF(2) | PLANE(0, 0) | PLANE(1, 0),
+	HALF(2) | PLANE(0, 1) | PLANE(1, 0),
+	HALF(2) | PLANE(0, 0) | PLANE(1, 1),
+	HALF(2) | PLANE(0, 1) | PLANE(1, 1),
+};
+
 unsigned
 split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
     uint64_t iz, size_t n, int inside, int parity[8])
@@ -381,7 +398,7 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 	double g[3][3], h = sp->step[level + 1];
 	uint64_t base[3] = { 2 * ix, 2 * iy, 2 * iz };
 	int flip[8] = { 0 }, a, k, q;
-	unsigned occupied = 0;
+	unsigned occupied = 0, reach;
 	size_t j;
 
 	for (a = 0; a < 3; a++)
@@ -431,20 +448,28 @@ split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
 		}
 		mask[j] = m;
 		occupied |= m;
+		/*
+		 * Bit 3 a + k: the box reaches grid plane k across axis a;
+		 * bit 2 + 3 a: it reaches the first half of the parent along a.
+		 */
+		reach = 0;
+		for (a = 0; a < 3; a++)
+			reach |= (unsigned)(t->lo[a] <= g[a][0] &&
+			    t->hi[a] >= g[a][0]) << 3 * a |
+			    (unsigned)(t->lo[a] <= g[a][1] &&
+			    t->hi[a] >= g[a][1]) << (3 * a + 1) |
+			    (unsigned)(t->lo[a] <= g[a][1] &&
+			    t->hi[a] >= g[a][0]) << (3 * a + 2);
 		/* the paths: child q's point from child from[q]'s */
 		for (q = 1; q < 8; q++) {
 			int p0 = from[q], d = ax[q], b0[3], b1[3];
 			struct point3 c0, c1;
 
+			/* the triangle's box must reach the path's line */
+			if ((reach & pathreach[q]) != pathreach[q])
+				continue;
 			b0[0] = p0 & 1, b0[1] = p0 >> 1 & 1, b0[2] = p0 >> 2;
 			b1[0] = q & 1, b1[1] = q >> 1 & 1, b1[2] = q >> 2;
-			/* the triangle's box must reach the path's line */
-			for (a = 0; a < 3; a++)
-				if (a != d && (t->lo[a] > g[a][b0[a]] ||
-				    t->hi[a] < g[a][b0[a]]))
-					break;
-			if (a < 3 || t->hi[d] < g[d][0] || t->lo[d] > g[d][1])
-				continue;
 			if (side[p0] == 2)
 				side[p0] = planeside(t, g, b0);
 			if (side[q] == 2)
