@@ -599,14 +599,16 @@ void	 qt3_cornervertex(const struct universe3 *, unsigned long long, int,
  * the parent.  split3_children gives the eight children's parities and
  * sorts the cell's triangles into them, and returns the set of children
  * that have any (bit q for child q); split3_child moves child q's to the
- * next level's list and gives their count.
+ * next level's list and gives their count.  When the children are leaves
+ * (the flag before parity), only that set is made, and the parities of
+ * the children outside it.
  */
 struct splitter3 *split3_new(const struct universe3 *);
 void	 split3_free(struct splitter3 *);
 void	 split3_addshell(struct splitter3 *, const struct shell *);
 size_t	 split3_root(struct splitter3 *, int *);
 unsigned split3_children(struct splitter3 *, int, uint64_t, uint64_t,
-	    uint64_t, size_t, int, int[8]);
+	    uint64_t, size_t, int, int, int[8]);
 size_t	 split3_child(struct splitter3 *, int, size_t, int);
 
 #endif

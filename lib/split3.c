@@ -378,6 +378,9 @@ static const int ax[8] = { -1, 0, 1, 1, 2, 2, 2, 2 };
  */
 #define PLANE(a, bit)	(1u << (3 * (a) + (bit)))
 #define HALF(a)		(1u << (3 * (a) + 2))
+/* childrenmet's flag: the triangle lies strictly inside one child */
+#define INSIDEONE	0x100
+
 static const unsigned pathreach[8] = {
 	0,
 	HALF(0) | PLANE(1, 0) | PLANE(2, 0),
@@ -389,110 +392,155 @@ static const unsigned pathreach[8] = {
 	HALF(2) | PLANE(0, 1) | PLANE(1, 1),
 };
 
+/*
+ * The children of the cube g[a][0]..g[a][2] that t meets, those of skip
+ * left out; its 27 grid points' orient3d kept in s.
+ */
+static unsigned
+childrenmet(const struct tri *t, const double g[3][3], signed char s[27],
+    unsigned skip)
+{
+	int in[3][2], a, q;
+	unsigned m = 0;
+
+	for (a = 0; a < 3; a++) {
+		in[a][0] = t->lo[a] < g[a][1] && t->hi[a] > g[a][0];
+		in[a][1] = t->lo[a] < g[a][2] && t->hi[a] > g[a][1];
+	}
+	/*
+	 * Most triangles, once cubes are larger than they are, lie strictly
+	 * inside one child, away from every path.
+	 */
+	if (in[0][0] != in[0][1] && in[1][0] != in[1][1] &&
+	    in[2][0] != in[2][1]) {
+		int i0 = in[0][1], i1 = in[1][1], i2 = in[2][1];
+
+		if (t->lo[0] > g[0][i0] && t->hi[0] < g[0][i0 + 1] &&
+		    t->lo[1] > g[1][i1] && t->hi[1] < g[1][i1 + 1] &&
+		    t->lo[2] > g[2][i2] && t->hi[2] < g[2][i2 + 1])
+			return 1u << (4 * i2 + 2 * i1 + i0) | INSIDEONE;
+	}
+	for (q = 0; q < 8; q++) {
+		int bx = q & 1, by = q >> 1 & 1, bz = q >> 2;
+		double lo[3], hi[3];
+
+		if (!in[0][bx] || !in[1][by] || !in[2][bz] || skip >> q & 1)
+			continue;
+		lo[0] = g[0][bx], hi[0] = g[0][bx + 1];
+		lo[1] = g[1][by], hi[1] = g[1][by + 1];
+		lo[2] = g[2][bz], hi[2] = g[2][bz + 1];
+		if (meetsbox(t, lo, hi, &s[9 * bz + 3 * by + bx]))
+			m |= 1u << q;
+	}
+	return m;
+}
+
+/*
+ * The paths of need (bit q for the path to child q) that t crosses, their
+ * bits flipped in flip.
+ */
+static void
+pathscrossed(const struct tri *t, const double g[3][3], unsigned need,
+    int flip[8])
+{
+	signed char nudged[8], side[8];
+	unsigned reach = 0;
+	int a, q;
+
+	memset(nudged, 2, sizeof(nudged));
+	memset(side, 2, sizeof(side));
+	/*
+	 * Bit 3 a + k: the box reaches grid plane k across axis a; bit 2 +
+	 * 3 a: it reaches the first half of the parent along a.
+	 */
+	for (a = 0; a < 3; a++)
+		reach |= (unsigned)(t->lo[a] <= g[a][0] &&
+		    t->hi[a] >= g[a][0]) << 3 * a |
+		    (unsigned)(t->lo[a] <= g[a][1] &&
+		    t->hi[a] >= g[a][1]) << (3 * a + 1) |
+		    (unsigned)(t->lo[a] <= g[a][1] &&
+		    t->hi[a] >= g[a][0]) << (3 * a + 2);
+	/* the paths: child q's point from child from[q]'s */
+	for (q = 1; q < 8; q++) {
+		int p0 = from[q], d = ax[q], b0[3], b1[3];
+		struct point3 c0, c1;
+
+		/* the triangle's box must reach the path's line */
+		if (!(need >> q & 1) ||
+		    (reach & pathreach[q]) != pathreach[q])
+			continue;
+		b0[0] = p0 & 1, b0[1] = p0 >> 1 & 1, b0[2] = p0 >> 2;
+		b1[0] = q & 1, b1[1] = q >> 1 & 1, b1[2] = q >> 2;
+		if (side[p0] == 2)
+			side[p0] = planeside(t, g, b0);
+		if (side[q] == 2)
+			side[q] = planeside(t, g, b1);
+		if (side[p0] != 0 && side[p0] == side[q])
+			continue;	/* both ends on one side */
+		c0 = pt3(g[0][b0[0]], g[1][b0[1]], g[2][b0[2]]);
+		c1 = pt3(g[0][b1[0]], g[1][b1[1]], g[2][b1[2]]);
+		if (!axisline_meets(vert(t, 0), vert(t, 1), vert(t, 2), c0, d))
+			continue;
+		if (side[p0] != 0 && side[q] != 0) {
+			flip[q] ^= 1;	/* on the two sides */
+			continue;
+		}
+		if (nudged[p0] == 2)
+			nudged[p0] = orient3d_nudged(vert(t, 0), vert(t, 1),
+			    vert(t, 2), c0);
+		if (nudged[q] == 2)
+			nudged[q] = orient3d_nudged(vert(t, 0), vert(t, 1),
+			    vert(t, 2), c1);
+		flip[q] ^= nudged[p0] != nudged[q];
+	}
+}
+
 unsigned
 split3_children(struct splitter3 *sp, int level, uint64_t ix, uint64_t iy,
-    uint64_t iz, size_t n, int inside, int parity[8])
+    uint64_t iz, size_t n, int inside, int leaves, int parity[8])
 {
+	/* the paths to child q: its own and those to the children before */
+	static const unsigned chain[8] = { 0, 0x02, 0x04, 0x0a, 0x10, 0x22,
+	    0x44, 0x8a };
 	const uint32_t *list = sp->list[level].tris;
 	unsigned char *mask = sp->list[level].masks;
 	double g[3][3], h = sp->step[level + 1];
 	uint64_t base[3] = { 2 * ix, 2 * iy, 2 * iz };
 	int flip[8] = { 0 }, a, k, q;
-	unsigned occupied = 0, reach;
+	unsigned occupied = 0, need = 0xfe, m;
+	signed char s[27];	/* orient3d at the grid points; 2 unknown */
 	size_t j;
 
 	for (a = 0; a < 3; a++)
 		for (k = 0; k < 3; k++)
 			g[a][k] = (a == 0 ? sp->u.x0 : a == 1 ? sp->u.y0 :
 			    sp->u.z0) + (double)(base[a] + k) * h;
-	for (j = 0; j < n; j++) {
+	/*
+	 * Children that are leaves need no lists, a child once met no more
+	 * tests, and only those never met a parity: the paths on their way.
+	 */
+	if (leaves) {
+		for (j = 0; j < n && occupied != 0xff; j++) {
+			memset(s, 2, sizeof(s));
+			occupied |= childrenmet(&sp->tris[list[j]], g, s,
+			    occupied) & 0xff;
+		}
+		for (need = 0, q = 1; q < 8; q++)
+			if (!(occupied >> q & 1))
+				need |= chain[q];
+	}
+	for (j = 0; j < n && need != 0; j++) {
 		const struct tri *t = &sp->tris[list[j]];
-		/* orient3d at grid point (i, j, k), 27 of them; 2 unknown */
-		signed char s[27], nudged[8], side[8];
-		int in[3][2], m = 0;
 
-		memset(s, 2, sizeof(s));
-		memset(nudged, 2, sizeof(nudged));
-		memset(side, 2, sizeof(side));
-		for (a = 0; a < 3; a++) {
-			in[a][0] = t->lo[a] < g[a][1] && t->hi[a] > g[a][0];
-			in[a][1] = t->lo[a] < g[a][2] && t->hi[a] > g[a][1];
+		if (!leaves) {
+			memset(s, 2, sizeof(s));
+			m = childrenmet(t, g, s, 0);
+			mask[j] = m & 0xff;
+			occupied |= m & 0xff;
+			if (m & INSIDEONE)
+				continue;
 		}
-		/*
-		 * Most triangles, once cubes are larger than they are, lie
-		 * strictly inside one child, away from every path.
-		 */
-		if (in[0][0] != in[0][1] && in[1][0] != in[1][1] &&
-		    in[2][0] != in[2][1]) {
-			int i0 = in[0][1], i1 = in[1][1], i2 = in[2][1];
-
-			if (t->lo[0] > g[0][i0] && t->hi[0] < g[0][i0 + 1] &&
-			    t->lo[1] > g[1][i1] && t->hi[1] < g[1][i1 + 1] &&
-			    t->lo[2] > g[2][i2] && t->hi[2] < g[2][i2 + 1]) {
-				mask[j] = 1 << (4 * i2 + 2 * i1 + i0);
-				occupied |= mask[j];
-				continue;
-			}
-		}
-		for (q = 0; q < 8; q++) {
-			int bx = q & 1, by = q >> 1 & 1, bz = q >> 2;
-			double lo[3], hi[3];
-
-			if (!in[0][bx] || !in[1][by] || !in[2][bz])
-				continue;
-			lo[0] = g[0][bx], hi[0] = g[0][bx + 1];
-			lo[1] = g[1][by], hi[1] = g[1][by + 1];
-			lo[2] = g[2][bz], hi[2] = g[2][bz + 1];
-			if (meetsbox(t, lo, hi, &s[9 * bz + 3 * by + bx]))
-				m |= 1 << q;
-		}
-		mask[j] = m;
-		occupied |= m;
-		/*
-		 * Bit 3 a + k: the box reaches grid plane k across axis a;
-		 * bit 2 + 3 a: it reaches the first half of the parent along a.
-		 */
-		reach = 0;
-		for (a = 0; a < 3; a++)
-			reach |= (unsigned)(t->lo[a] <= g[a][0] &&
-			    t->hi[a] >= g[a][0]) << 3 * a |
-			    (unsigned)(t->lo[a] <= g[a][1] &&
-			    t->hi[a] >= g[a][1]) << (3 * a + 1) |
-			    (unsigned)(t->lo[a] <= g[a][1] &&
-			    t->hi[a] >= g[a][0]) << (3 * a + 2);
-		/* the paths: child q's point from child from[q]'s */
-		for (q = 1; q < 8; q++) {
-			int p0 = from[q], d = ax[q], b0[3], b1[3];
-			struct point3 c0, c1;
-
-			/* the triangle's box must reach the path's line */
-			if ((reach & pathreach[q]) != pathreach[q])
-				continue;
-			b0[0] = p0 & 1, b0[1] = p0 >> 1 & 1, b0[2] = p0 >> 2;
-			b1[0] = q & 1, b1[1] = q >> 1 & 1, b1[2] = q >> 2;
-			if (side[p0] == 2)
-				side[p0] = planeside(t, g, b0);
-			if (side[q] == 2)
-				side[q] = planeside(t, g, b1);
-			if (side[p0] != 0 && side[p0] == side[q])
-				continue;	/* both ends on one side */
-			c0 = pt3(g[0][b0[0]], g[1][b0[1]], g[2][b0[2]]);
-			c1 = pt3(g[0][b1[0]], g[1][b1[1]], g[2][b1[2]]);
-			if (!axisline_meets(vert(t, 0), vert(t, 1), vert(t, 2),
-			    c0, d))
-				continue;
-			if (side[p0] != 0 && side[q] != 0) {
-				flip[q] ^= 1;	/* on the two sides */
-				continue;
-			}
-			if (nudged[p0] == 2)
-				nudged[p0] = orient3d_nudged(vert(t, 0),
-				    vert(t, 1), vert(t, 2), c0);
-			if (nudged[q] == 2)
-				nudged[q] = orient3d_nudged(vert(t, 0), vert(t, 1),
-				    vert(t, 2), c1);
-			flip[q] ^= nudged[p0] != nudged[q];
-		}
+		pathscrossed(t, g, need, flip);
 	}
 	parity[0] = inside;
 	for (q = 1; q < 8; q++)

@@ -126,14 +126,14 @@ visit3(int level, uint64_t ix, uint64_t iy, uint64_t iz, size_t n,
 			die(1, "write error");
 		return;
 	}
+	/* the children are leaves: whether they have triangles is enough */
+	leaves = !splits3(level + 1, 1);
 	if (n > 0)
 		occupied = split3_children(in3.sp, level, ix, iy, iz, n, inside,
-		    parity);
+		    leaves, parity);
 	else
 		for (q = 0; q < 8; q++)
 			parity[q] = inside;
-	/* the children are leaves: whether they have triangles is enough */
-	leaves = !splits3(level + 1, 1);
 	for (q = 0; q < 8; q++) {
 		size_t m = n == 0 ? 0 : leaves ? occupied >> q & 1 :
 		    split3_child(in3.sp, level, n, q);
@@ -166,7 +166,7 @@ descend3(const char *subtree, uint64_t *ix, uint64_t *iy, uint64_t *iz,
 		if (*n > 0)
 			split3_children(in3.sp, i, *ix >> (depth - i),
 			    *iy >> (depth - i), *iz >> (depth - i), *n,
-			    *inside, parity);
+			    *inside, 0, parity);
 		else
 			parity[q] = *inside;
 		*n = *n > 0 ? split3_child(in3.sp, i, *n, q) : 0;
