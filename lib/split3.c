@@ -32,7 +32,7 @@ struct tri {
 	double		 lo[3], hi[3];
 	double		 normal[3];	/* (v1 - v0) x (v2 - v0), rounded */
 	double		 slack[3];	/* the plane's error bound, per unit */
-	signed char	 turn[3];	/* exact: the turn of v0 v1 v2 across an axis */
+	signed char	 turn[3];	/* exact: the turn across an axis */
 };
 
 struct worklist3 {
@@ -153,10 +153,10 @@ split3_addshell(struct splitter3 *sp, const struct shell *g)
 			t->c[i][0] = p.x, t->c[i][1] = p.y, t->c[i][2] = p.z;
 		}
 		for (a = 0; a < 3; a++) {
-			double c0 = t->c[0][a], c1 = t->c[1][a], c2 = t->c[2][a];
+			const double c0 = t->c[0][a], c1 = t->c[1][a];
 
-			t->lo[a] = fmin(c0, fmin(c1, c2));
-			t->hi[a] = fmax(c0, fmax(c1, c2));
+			t->lo[a] = fmin(c0, fmin(c1, t->c[2][a]));
+			t->hi[a] = fmax(c0, fmax(c1, t->c[2][a]));
 		}
 		for (a = 0; a < 3; a++) {
 			int u = a == 0 ? 1 : 0, v = a == 2 ? 1 : 2;
@@ -225,9 +225,9 @@ planeapart(const struct tri *t, const double lo[3], const double hi[3],
 		signed char *s = &o[gridcorner[c]];
 
 		if (*s == 2)
-			*s = orient3d(vert(t, 0), vert(t, 1), vert(t, 2), pt3(c & 1 ?
-			    hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ?
-			    hi[2] : lo[2]));
+			*s = orient3d(vert(t, 0), vert(t, 1), vert(t, 2),
+			    pt3(c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1],
+			    c & 4 ? hi[2] : lo[2]));
 		pos |= *s > 0;
 		neg |= *s < 0;
 	}
@@ -276,9 +276,9 @@ edgesapart(const struct tri *t, const double lo[3], const double hi[3])
 		if (t->turn[a] == 0)
 			continue;
 		for (e = 0; e < 3; e++) {
-			const double *p = t->c[e], *q = t->c[e == 2 ? 0 : e + 1];
+			int f = e == 2 ? 0 : e + 1, sign;
+			const double *p = t->c[e], *q = t->c[f];
 			double ku, kv, l, r, det, bound;
-			int sign;
 
 			/*
 			 * The box corner k where cross(q - p, k - p), L.(k -
@@ -300,8 +300,8 @@ edgesapart(const struct tri *t, const double lo[3], const double hi[3])
 				double k[3];
 
 				k[a] = 0, k[u] = ku, k[v] = kv;
-				sign = crossdir3(vert(t, e), vert(t, e == 2 ? 0 :
-				    e + 1), pt3(k[0], k[1], k[2]), vert(t, e), a);
+				sign = crossdir3(vert(t, e), vert(t, f),
+				    pt3(k[0], k[1], k[2]), vert(t, e), a);
 			}
 			if (sign * t->turn[a] >= 0)
 				return 1;
@@ -373,8 +373,8 @@ static const int from[8] = { 0, 0, 0, 1, 0, 1, 2, 3 };
 static const int ax[8] = { -1, 0, 1, 1, 2, 2, 2, 2 };
 
 /*
- * The reach bits (split3_children's) path q needs: along its axis, the
- * first half; across each other axis a, the plane of from[q]'s bit.
+ * The reach bits (pathscrossed's) path q needs: along its axis, the first
+ * half; across each other axis a, the plane of from[q]'s bit.
  */
 #define PLANE(a, bit)	(1u << (3 * (a) + (bit)))
 #define HALF(a)		(1u << (3 * (a) + 2))
