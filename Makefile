@@ -18,7 +18,7 @@ LIBOBJ = lib/msg.o lib/hugepage.o lib/parse.o lib/fmt.o lib/geom.o lib/cell.o li
 	lib/write.o lib/area.o lib/cellset.o lib/corner.o lib/split.o \
 	lib/pow5.o lib/op.o lib/arc.o lib/arccheck.o lib/bigint.o lib/cut.o \
 	lib/earclip.o lib/celltext.o lib/readhead.o lib/solid.o lib/read3.o \
-	lib/write3.o lib/split3.o
+	lib/write3.o lib/split3.o lib/volfrac.o
 
 all: $(BIN)
 

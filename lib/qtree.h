@@ -588,9 +588,21 @@ void	 qt3_header(void);
 void	 qt3_universe(const struct universe3 *);
 void	 qt3_shell(const struct shell *);
 void	 qt3_cell(const struct universe3 *, const struct cell3 *);
+void	 qt3_cellfrac(const struct universe3 *, const struct cell3 *, double);
 void	 qt3_echo(const struct qt3rec *);
 void	 qt3_cornervertex(const struct universe3 *, unsigned long long, int,
 	    uint64_t, uint64_t, uint64_t);
+
+/*
+ * volfrac.c: volume fractions of cubes for qtleaves -a.  volfrac_cell is
+ * the share of the cube's volume inside the solid the shells bound, from
+ * 0 to 1 (see the file's head: floating point, degenerate positions
+ * decided exactly as qtree(5)'s parity decides them).
+ */
+struct volfrac *volfrac_new(const struct universe3 *);
+void	 volfrac_addshell(struct volfrac *, const struct shell *);
+double	 volfrac_cell(struct volfrac *, const struct cell3 *);
+void	 volfrac_free(struct volfrac *);
 
 /*
  * split3.c: the exact classifier of 3D cells, as split.c's for 2D: a

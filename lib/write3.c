@@ -128,8 +128,8 @@ cacheuniverse(const struct universe3 *u)
 }
 
 /* A cell of the universe u: its corner and size computed, not taken. */
-void
-qt3_cell(const struct universe3 *u, const struct cell3 *c)
+static char *
+cellfields3(const struct universe3 *u, const struct cell3 *c)
 {
 	const struct text3 *x, *y, *z;
 	char *p;
@@ -167,6 +167,26 @@ qt3_cell(const struct universe3 *u, const struct cell3 *c)
 		*p++ = ' ';
 		p = fmtint(p, (long long)c->id);
 	}
+	return p;
+}
+
+void
+qt3_cell(const struct universe3 *u, const struct cell3 *c)
+{
+	char *p = cellfields3(u, c);
+
+	*p++ = '\n';
+	qt_recorded(p);
+}
+
+/* A leaf with its element number and its volume fraction. */
+void
+qt3_cellfrac(const struct universe3 *u, const struct cell3 *c, double frac)
+{
+	char *p = cellfields3(u, c);
+
+	*p++ = ' ';
+	p = fmtreal(p, frac);
 	*p++ = '\n';
 	qt_recorded(p);
 }

@@ -323,6 +323,27 @@ ismesh(const char *line, size_t n)
 	    (n > 5 && strncmp(line, "elem ", 5) == 0);
 }
 
+/*
+ * A 3D leaf's volume fraction: its class decides F and E, a P leaf's
+ * comes from the triangles that meet it (lib/volfrac.c).
+ */
+static double
+fraction3(struct qtreader *r, struct volfrac *vf, const struct cell3 *c)
+{
+	double frac;
+
+	if (c->class != 'P')
+		return c->class == 'F';
+	if (vf == NULL)
+		qt_fail(r, "-a: leaf %s comes before the stream's universe",
+		    c->path);
+	if ((frac = volfrac_cell(vf, c)) < 0)
+		qt_fail(r, "leaf %s is P, but no triangle of the stream's "
+		    "shells comes near it: the shells are not the tree's",
+		    c->path);
+	return frac;
+}
+
 static int
 leaves3(struct qtreader *r, const struct options *o)
 {
@@ -330,15 +351,16 @@ leaves3(struct qtreader *r, const struct options *o)
 	struct qt3rec rec;
 	struct universe3 u = { 0, 0, 0, 1 };
 	unsigned long long id = 0;
+	struct volfrac *vf = NULL;
 	int kept;
 
 	if (o->format != QTREE)
 		die(2, "-f %s: a 3D stream's leaves are cubes, not polygons; "
 		    "only the qtree format writes them",
 		    o->format == WKT ? "wkt" : "geojson");
-	if (o->aflag)
-		die(2, "-a: volume fractions of a 3D stream's leaves are not "
-		    "computed");
+	if (o->pflag)
+		die(2, "-p: a 3D stream's leaves are cubes, not polygons; "
+		    "cut pieces are not written");
 	s = qt3_open(r);
 	qt3_header();
 	while (qt3_read(s, &rec) != QT_EOF)
@@ -346,12 +368,22 @@ leaves3(struct qtreader *r, const struct options *o)
 		case QT_UNIVERSE:
 			u = rec.u;
 			qt3_universe(&u);
+			if (o->aflag)
+				vf = volfrac_new(&u);
 			break;
 		case QT_LEVEL:
 			qt_level(rec.level);
 			break;
 		case QT_SHELL:
+			if (o->aflag)
+				volfrac_addshell(vf, &rec.shell);
 			qt3_shell(&rec.shell);
+			break;
+		case QT_OBJECT:
+			if (o->aflag)
+				qt_fail(r, "-a: the cells of a combined stream "
+				    "are not those of its shells");
+			qt3_echo(&rec);
 			break;
 		case QT_NODE:
 			break;
@@ -359,7 +391,11 @@ leaves3(struct qtreader *r, const struct options *o)
 			kept = (o->keep & CELL_CLASSBIT(rec.c.class)) != 0;
 			if (kept) {
 				rec.c.id = ++id;
-				qt3_cell(&u, &rec.c);
+				if (o->aflag)
+					qt3_cellfrac(&u, &rec.c,
+					    fraction3(r, vf, &rec.c));
+				else
+					qt3_cell(&u, &rec.c);
 			}
 			if (o->nflag)
 				meshleaf3(&u, &rec.c, kept);
@@ -374,6 +410,7 @@ leaves3(struct qtreader *r, const struct options *o)
 		}
 	qt3_close(s);
 	qt_close(r);
+	volfrac_free(vf);
 	qt_end();
 	closeout();
 	return 0;
