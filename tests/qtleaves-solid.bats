@@ -74,12 +74,12 @@ oracleleaves() {
 	[[ "$stderr" == *"bad:"*"fields"* ]]
 }
 
-@test "-f geojson, -f wkt, -a and -p are refused on a 3D stream, with exit 2 and nothing written" {
+@test "-f geojson, -f wkt and -p are refused on a 3D stream, with exit 2 and nothing written" {
 	polyread "$SOLIDS/cube.off" | qtsplit -l 1 > tree
-	for o in "-f geojson" "-f wkt" "-a" "-p -f wkt" "-n -f wkt"; do
+	for o in "-f geojson" "-f wkt" "-p -f wkt" "-n -f wkt" "-a -f wkt"; do
 		run -2 --separate-stderr qtleaves $o tree
 		[ -z "$output" ] || { echo "$o wrote: $output"; return 1; }
-		[[ "$stderr" == "qtleaves: -"[fap]*"3D stream"* ||
+		[[ "$stderr" == "qtleaves: -"[fp]*"3D stream"* ||
 		    "$stderr" == "qtleaves: -n: a mesh is written in the qtree format only" ]] ||
 		    { echo "$o: $stderr"; return 1; }
 	done

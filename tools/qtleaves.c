@@ -311,9 +311,9 @@ leaf(struct qtreader *r, const struct options *o, const struct universe *u,
 
 /*
  * A 3D stream (qtree(5), Solids): its leaves kept and numbered as in 2D,
- * with -n their mesh of hexahedra; the head written again, the nodes
- * dropped.  Fractions and shapes are 2D ideas (areas, polygons), refused
- * as usage errors.
+ * with -n their mesh of hexahedra, with -a their volume fractions; the
+ * head written again, the nodes dropped.  Shapes are 2D ideas (polygons),
+ * refused as usage errors.
  */
 /* Is the line of n bytes a vertex or elem record? */
 static int
@@ -358,9 +358,6 @@ leaves3(struct qtreader *r, const struct options *o)
 		die(2, "-f %s: a 3D stream's leaves are cubes, not polygons; "
 		    "only the qtree format writes them",
 		    o->format == WKT ? "wkt" : "geojson");
-	if (o->pflag)
-		die(2, "-p: a 3D stream's leaves are cubes, not polygons; "
-		    "cut pieces are not written");
 	s = qt3_open(r);
 	qt3_header();
 	while (qt3_read(s, &rec) != QT_EOF)
