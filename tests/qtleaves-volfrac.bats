@@ -179,3 +179,13 @@ sumlaw() {
 	run -2 --separate-stderr qtleaves -a -f geojson tree
 	[ -z "$output" ]
 }
+
+@test "qtleaves(1): the octahedron's volume from its fractions runs as printed and prints 4/3" {
+	sed -n '/^The same octahedron.s volume/,/^\.Ed/p' "$TOP/man/qtleaves.1" |
+	    sed '1,2d;$d' > block
+	sed '$d' block | sed 's/^\$ //; s/\\e/\\/g' > cmd
+	[ "$(wc -l < cmd)" -eq 3 ]
+	(cd "$TOP" && bash "$BATS_TEST_TMPDIR/cmd") > got
+	tail -n 1 block | diff - got
+	awk 'BEGIN { printf "%.12g\n", 4 / 3 }' | diff - got
+}
