@@ -202,12 +202,31 @@ newstamp(struct volfrac *vf)
 	return vf->now;
 }
 
+/* Whether triangle a's bounding box meets the closed box lo, hi. */
+static int
+meets(const struct point3 *a, const double lo[3], const double hi[3])
+{
+	int axis;
+
+	for (axis = 0; axis < 3; axis++) {
+		double u = coord(&a[0], axis), v = coord(&a[1], axis);
+		double w = coord(&a[2], axis);
+
+		if ((u < lo[axis] && v < lo[axis] && w < lo[axis]) ||
+		    (u > hi[axis] && v > hi[axis] && w > hi[axis]))
+			return 0;
+	}
+	return 1;
+}
+
 /* Whether p + (e, e^2, e^3) lies inside the solid: a ray's parity. */
 static int
 inside(struct volfrac *vf, struct point3 p)
 {
 	int by = bucket(vf, p.y, vf->u.y0), bz = bucket(vf, p.z, vf->u.z0);
 	int i, odd = 0;
+	/* the ray's bounding box */
+	double lo[3] = { p.x, p.y, p.z }, hi[3] = { HUGE_VAL, p.y, p.z };
 	uint32_t now = newstamp(vf), m;
 
 	for (i = bucket(vf, p.x, vf->u.x0); i < vf->g; i++) {
@@ -219,6 +238,8 @@ inside(struct volfrac *vf, struct point3 p)
 			if (vf->stamp[k] == now)
 				continue;
 			vf->stamp[k] = now;
+			if (!meets(vf->t[k], lo, hi))
+				continue;
 			odd ^= ray3_crosses(vf->t[k][0], vf->t[k][1],
 			    vf->t[k][2], p);
 		}
@@ -387,14 +408,14 @@ holdsyline(const struct point3 *a, struct point3 p)
 	    0 && orient3d(a[0], a[1], a[2], p) == 0;
 }
 
-/* The cube's fraction; -1 when no triangle comes near it. */
+/* The cube's fraction; -1 when no triangle's bounding box meets it. */
 double
 volfrac_cell(struct volfrac *vf, const struct cell3 *c)
 {
 	const struct universe3 *u = &vf->u;
 	struct point3 p;
 	double lo[3], hi[3], t[3][3], v = 0;
-	int blo[3], bhi[3], axis, i, j, l, n = 0;
+	int blo[3], bhi[3], axis, i, j, l, n = 0, met = 0;
 	uint32_t now, m;
 	uint64_t idx[3] = { c->ix, c->iy, c->iz };
 
@@ -430,6 +451,9 @@ volfrac_cell(struct volfrac *vf, const struct cell3 *c)
 		size_t k = vf->near[m];
 		int flat = 1;
 
+		if (!meets(vf->t[k], lo, hi))
+			continue;	/* every term would be 0 */
+		met++;
 		for (i = 0; i < 3; i++) {
 			double q[3] = { vf->t[k][i].x, vf->t[k][i].y,
 			    vf->t[k][i].z };
@@ -445,7 +469,7 @@ volfrac_cell(struct volfrac *vf, const struct cell3 *c)
 			v += section(t);
 		v += edgecross(vf, k, t, p);
 	}
-	if (n == 0)
+	if (met == 0)
 		return -1;	/* no triangle meets the cube: it is not P */
 	v += inside(vf, p);
 	return v < 0 ? 0 : v > 1 ? 1 : v;
