@@ -45,10 +45,10 @@ struct volfrac {
 	struct universe3 u;
 	struct point3	(*t)[3];	/* every shell's triangles */
 	size_t		 nt, cap;
-	int		 g;		/* buckets along an axis; 0 when unbuilt */
+	int		 g;		/* buckets a side; 0: unbuilt */
 	double		 scale;		/* g / size */
-	uint32_t	*off, *item;	/* bucket b's are item[off[b] .. off[b + 1]) */
-	uint32_t	*stamp, now;	/* triangle k seen when stamp[k] == now */
+	uint32_t	*off, *item;	/* b's: item[off[b] .. off[b+1]) */
+	uint32_t	*stamp, now;	/* k seen: stamp[k] == now */
 	uint32_t	*near;		/* the cube's triangles */
 };
 
@@ -90,7 +90,8 @@ volfrac_addshell(struct volfrac *vf, const struct shell *sh)
 		vf->nt++;
 	}
 	if (vf->nt > UINT32_MAX - 1)
-		die(1, "more than %lu triangles", (unsigned long)UINT32_MAX - 1);
+		die(1, "more than %lu triangles",
+		    (unsigned long)UINT32_MAX - 1);
 	vf->g = 0;
 }
 

@@ -181,8 +181,8 @@ sumlaw() {
 }
 
 @test "qtleaves(1): the octahedron's volume from its fractions runs as printed and prints 4/3" {
-	sed -n '/^The same octahedron.s volume/,/^\.Ed/p' "$TOP/man/qtleaves.1" |
-	    sed '1,2d;$d' > block
+	sed -n '/^The octahedron.s volume from all/,/^\.Ed/p' "$TOP/man/qtleaves.1" |
+	    sed '1,3d;$d' > block
 	sed '$d' block | sed 's/^\$ //; s/\\e/\\/g' > cmd
 	[ "$(wc -l < cmd)" -eq 3 ]
 	(cd "$TOP" && bash "$BATS_TEST_TMPDIR/cmd") > got

@@ -365,8 +365,10 @@ leaves3(struct qtreader *r, const struct options *o)
 		case QT_UNIVERSE:
 			u = rec.u;
 			qt3_universe(&u);
-			if (o->aflag)
+			if (o->aflag) {
+				volfrac_free(vf);
 				vf = volfrac_new(&u);
+			}
 			break;
 		case QT_LEVEL:
 			qt_level(rec.level);
