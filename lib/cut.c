@@ -64,7 +64,7 @@ struct cutter {
 	struct event	*ev;
 	size_t		 pccap;
 	struct point	*lp;
-	size_t		*lr;		/* per point: ring of its next side, or 0 */
+	size_t		*lr;		/* per point: edge of its next side, or 0 */
 	size_t		*ll, nlp, lpcap, nll, llcap, lstart;
 	double		 box[4];		/* x0, x1, y0, y1 */
 	/* the path of the splitter's lists, down to the cell at hand */
@@ -594,18 +594,18 @@ cmpevent(const void *va, const void *vb)
 }
 
 /*
- * Adds p, from which the loop goes on along ring (its number from 1) or
+ * Adds p, from which the loop goes on along edge (its number from 1) or
  * along the cell's side (0).
  */
 static void
-addpoint(struct cutter *ct, struct point p, size_t ring)
+addpoint(struct cutter *ct, struct point p, size_t edge)
 {
 	size_t first = ct->lstart;
 
 	/* a point given twice running (a touch, a corner crossed) is one */
 	if (ct->nlp > first && ct->lp[ct->nlp - 1].x == p.x &&
 	    ct->lp[ct->nlp - 1].y == p.y) {
-		ct->lr[ct->nlp - 1] = ring;
+		ct->lr[ct->nlp - 1] = edge;
 		return;
 	}
 	if (ct->nlp == ct->lpcap) {
@@ -613,7 +613,7 @@ addpoint(struct cutter *ct, struct point p, size_t ring)
 		ct->lp = xreallocarray(ct->lp, ct->lpcap, sizeof(*ct->lp));
 		ct->lr = xreallocarray(ct->lr, ct->lpcap, sizeof(*ct->lr));
 	}
-	ct->lr[ct->nlp] = ring;
+	ct->lr[ct->nlp] = edge;
 	ct->lp[ct->nlp++] = p;
 }
 
@@ -831,10 +831,10 @@ cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
 				corner.y = y[(s % 4) == RIGHT || (s % 4) == TOP];
 				addpoint(ct, corner, 0);
 			}
-			addpoint(ct, ct->pc[q].p[0], ringof(ct, ct->pc[q].edge) + 1);
+			addpoint(ct, ct->pc[q].p[0], ct->pc[q].edge + 1);
 			while (ct->pc[q].side[1] == NONE) {
 				ct->pc[q].used = 1;
-				addpoint(ct, ct->pc[q].b, ringof(ct, ct->pc[q].edge) + 1);
+				addpoint(ct, ct->pc[q].b, ct->pc[q].edge + 1);
 				if ((q = nextpiece(ct, n, q)) == n ||
 				    ct->pc[q].side[0] != NONE)
 					return (size_t)-1;
@@ -865,7 +865,7 @@ cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
 		q = k;
 		do {
 			ct->pc[q].used = 1;
-			addpoint(ct, ct->pc[q].b, ringof(ct, ct->pc[q].edge) + 1);
+			addpoint(ct, ct->pc[q].b, ct->pc[q].edge + 1);
 			if ((q = nextpiece(ct, n, q)) == n)
 				return (size_t)-1;
 		} while (q != k);
@@ -878,10 +878,11 @@ cut_loops(struct cutter *ct, const struct cell *c, const struct point **pts,
 
 /*
  * Along what each point of the last cut_loops goes on to the next: the
- * number of its ring, from 1 in the order added, or 0 for the cell's side.
+ * number of a ring's edge, from 1 over the rings in the order added, or
+ * 0 for the cell's side.
  */
 const size_t *
-cut_looprings(const struct cutter *ct)
+cut_loopedges(const struct cutter *ct)
 {
 	return ct->lr;
 }

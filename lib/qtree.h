@@ -461,9 +461,11 @@ void	 area_moresult(const struct moments *, double *, double *, double *);
  * the cell between its corners as qtree(5) defines them.  cut_loops
  * gives the region inside a cell as loops with the region on their left
  * (outer loops counter-clockwise, holes clockwise), their crossings of
- * the cell's sides rounded to doubles alike in the cells on either side.  cut_looprings
- * says, for each of their points, what the loop runs along from there:
- * the ring of that number, from 1 in the order added, or (0) the cell.
+ * the cell's sides rounded to doubles alike in the cells on either side.
+ * cut_loopedges says, for each of their points, what the loop runs along
+ * from there: the rings' edge of that number, from 1 over the rings in
+ * the order added (a ring's n edges after those of the rings before it),
+ * or (0) the cell.
  */
 struct cutter *cut_new(const struct universe *);
 void	 cut_free(struct cutter *);
@@ -473,7 +475,7 @@ void	 cut_addarea(struct xsum *, const struct universe *,
 	    const struct cell *, double);
 size_t	 cut_loops(struct cutter *, const struct cell *,
 	    const struct point **, const size_t **);
-const size_t *cut_looprings(const struct cutter *);
+const size_t *cut_loopedges(const struct cutter *);
 
 /*
  * earclip.c: the triangles of a region given as loops, outer loops

@@ -181,7 +181,7 @@ meshed='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	run -2 --separate-stderr qtmesh -b -c F /dev/null
 	[[ "$stderr" == *"not with -c"* ]]
 	run -2 --separate-stderr qtmesh -x
-	[ "${stderr_lines[1]}" = "usage: qtmesh [-bHhrTv] [-a angle] [-c classes] [-f format] [-o basename] [-t fraction] [file]" ]
+	[ "${stderr_lines[1]}" = "usage: qtmesh [-bHhrTv] [-a angle] [-c classes] [-e family] [-f format] [-o basename] [-t fraction] [file]" ]
 	grep -q '^\.Op Fl bHhrTv$' "$TOP/man/qtmesh.1"
 }
 

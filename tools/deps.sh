@@ -45,6 +45,7 @@ list() {
 	reader python3-meshio	meshio
 	reader python3-scipy	scipy
 	reader gmsh		have gmsh
+	reader calculix-ccx	have ccx
 	EOF2
 }
 

@@ -273,26 +273,36 @@ arcpoints(struct mesh *m, struct point a, struct point mid, struct point b,
 	free(ts);
 }
 
-/* Ring g with its arcs made chords, into the cutter and bfit's tables. */
+/*
+ * Ring g with its arcs made chords, into the cutter and bfit's tables;
+ * each chord tagged with the number of the arc's edge, from first + 1.
+ */
 static void
-chordring(struct mesh *m, const struct ring *g, long lineno, int level)
+chordring(struct mesh *m, const struct ring *g, long lineno, int level,
+    uint32_t first)
 {
 	struct ring p = *g;
 	struct point *v = NULL;
-	size_t i, n = 0, cap = 0;
+	uint32_t *edge = NULL;
+	size_t i, n = 0, cap = 0, ecap = 0, j;
 
 	for (i = 0; i < g->n; i++) {
+		j = n;
 		addvertex(&v, &n, &cap, g->v[i].x, g->v[i].y);
 		if (g->arc[i])
 			arcpoints(m, g->v[i], g->mid[i], g->v[(i + 1) % g->n],
 			    level, &v, &n, &cap, (uint32_t)++m->b.narcsmade,
 			    lineno);
+		edge = xgrow(edge, &ecap, n, sizeof(*edge));
+		for (; j < n; j++)
+			edge[j] = first + (uint32_t)i + 1;
 	}
 	p.v = v;
 	p.n = n;
 	p.narcs = 0;
-	bfitring(m, &p, lineno);
+	bfitring(m, &p, lineno, edge, g->n);
 	free(v);
+	free(edge);
 }
 
 /*
@@ -305,13 +315,15 @@ chordrings(struct mesh *m)
 	struct bfit *b = &m->b;
 	char path[QT_GRID + 2];
 	size_t i, w;
+	uint32_t first;
 	int maxlevel = 0;
 
 	for (i = 0; i < m->nleaves; i++)
 		if (m->leaves[i].level > maxlevel)
 			maxlevel = m->leaves[i].level;
-	for (i = 0; i < b->nkept; i++) {
-		chordring(m, &b->kept[i], b->keptline[i], maxlevel);
+	for (i = 0, first = 0; i < b->nkept;
+	    first += (uint32_t)b->kept[i++].n) {
+		chordring(m, &b->kept[i], b->keptline[i], maxlevel, first);
 		free(b->kept[i].v);
 		free(b->kept[i].arc);
 		free(b->kept[i].mid);

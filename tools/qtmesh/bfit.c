@@ -125,19 +125,52 @@ addsize(size_t **a, size_t *n, size_t *cap, size_t v)
 	(*a)[(*n)++] = v;
 }
 
-/* A ring as read: to the cutter, and kept for sides along grid lines. */
+/*
+ * A ring as meshed (its arcs made chords): to the cutter, and kept for
+ * sides along grid lines; edge[i], the number of the stream's edge that
+ * its edge i lies on, to cedge.  Its ring's edges follow those before.
+ */
 void
-bfitring(struct mesh *m, const struct ring *ring, long lineno)
+bfitring(struct mesh *m, const struct ring *ring, long lineno,
+    const uint32_t *edge, size_t nedges)
 {
 	struct bfit *b = &m->b;
 	size_t i;
 
 	cut_addring(b->cutter, ring);
-	for (i = 0; i < ring->n; i++)
+	for (i = 0; i < ring->n; i++) {
 		addpoint(&b->rpts, &b->nrpts, &b->rptcap, ring->v[i].x,
 		    ring->v[i].y);
+		b->cedge = xgrow(b->cedge, &b->cedgecap, b->ncedge + 1,
+		    sizeof(*b->cedge));
+		b->cedge[b->ncedge++] = edge[i];
+	}
+	b->redge = xgrow(b->redge, &b->redgecap, b->nrlen + 2,
+	    sizeof(*b->redge));
+	if (b->nrlen == 0)
+		b->redge[0] = 0;
+	b->redge[b->nrlen + 1] = b->redge[b->nrlen] + nedges;
 	addsize(&b->rlen, &b->nrlen, &b->rlencap, ring->n);
 	addsize(&b->rline, &b->nrline, &b->rlinecap, (size_t)lineno);
+}
+
+/* The ring, from 1, of the edge with tag edge; 0 for none. */
+uint32_t
+edgering(const struct bfit *b, uint32_t edge)
+{
+	size_t lo = 0, hi = b->nrlen;
+
+	if (edge == 0)
+		return 0;
+	while (hi - lo > 1) {
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (b->redge[mid] < edge)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return (uint32_t)lo + 1;
 }
 
 static void
@@ -255,7 +288,7 @@ leafloops(struct mesh *m, const struct leaf *l)
 	struct bfit *b = &m->b;
 	char path[QT_GRID + 2];
 	const struct point *pts;
-	const size_t *len, *ring;
+	const size_t *len, *edge;
 	struct cell c;
 	double x[2], y[2];
 	size_t j, k, n, at;
@@ -285,10 +318,11 @@ leafloops(struct mesh *m, const struct leaf *l)
 	if (n == (size_t)-1)
 		errat(m->inname, l->lineno, "leaf %s: the rings do "
 		    "not close round it", c.path);
-	ring = cut_looprings(b->cutter);
+	edge = cut_loopedges(b->cutter);
 	for (j = at = 0; j < n; at += len[j++]) {
 		for (k = 0; k < len[j]; k++)
-			addlpt(b, pts[at + k].x, pts[at + k].y, ring[at + k]);
+			addlpt(b, pts[at + k].x, pts[at + k].y,
+			    edge[at + k] ? b->cedge[edge[at + k] - 1] : 0);
 		addllen(b, len[j]);
 	}
 }
@@ -563,22 +597,22 @@ flatloop(const struct point *p, size_t n)
 	return 1;
 }
 
-/* Puts the sides along rings of the loops into ringsides. */
+/* Puts the sides along rings of the loops into ringsides, with their edges. */
 static void
-ringsidesof(struct bfit *b, const struct point *pt, const size_t *ring,
+ringsidesof(struct bfit *b, const struct point *pt, const size_t *edge,
     const size_t *len, size_t nloops)
 {
 	size_t j, k, at;
 
 	for (j = at = 0; j < nloops; at += len[j++])
 		for (k = 0; k < len[j]; k++)
-			if (ring[at + k] != 0) {
+			if (edge[at + k] != 0) {
 				const struct point *p = &pt[at + k];
 				const struct point *q = &pt[at + (k + 1) %
 				    len[j]];
 
 				sideput(&b->ringsides, bvertex(b, p->x, p->y),
-				    bvertex(b, q->x, q->y), ring[at + k]);
+				    bvertex(b, q->x, q->y), edge[at + k]);
 			}
 }
 
@@ -693,5 +727,7 @@ bfitmesh(struct mesh *m)
 	if (m->format != QTREE && joining)
 		bfitboundary(m);
 	free(b->ringsides.slot);
+	free(b->cedge);
+	free(b->redge);
 	return b->nbv;
 }

@@ -100,7 +100,7 @@ indexaxes(struct bfit *bf)
 			e->line = axis ? p.y : p.x;
 			e->lo = axis ? fmin(p.x, q.x) : fmin(p.y, q.y);
 			e->hi = axis ? fmax(p.x, q.x) : fmax(p.y, q.y);
-			e->ring = (uint32_t)r + 1;
+			e->edge = bf->cedge[at + k];
 		}
 	for (axis = 0; axis < 2; axis++)
 		if (bf->naxedge[axis] > 0)
@@ -110,8 +110,8 @@ indexaxes(struct bfit *bf)
 }
 
 /*
- * The ring that a boundary side along a grid line runs along: one of its
- * edges holds both ends, exactly.  0 for none, which the rings of a valid
+ * The edge that a boundary side along a grid line runs along, as its tag:
+ * it holds both ends, exactly.  0 for none, which the rings of a valid
  * tree do not leave.
  */
 static uint32_t
@@ -141,20 +141,27 @@ ringalong(struct bfit *bf, struct point a, struct point b)
 	for (n = bf->naxedge[axis]; first < n && e[first].line == line;
 	    first++)
 		if (e[first].lo <= lo && hi <= e[first].hi)
-			return e[first].ring;
+			return e[first].edge;
 	return 0;
+}
+
+/* The tag of the edge that side a-b runs along, either way, or 0. */
+uint32_t
+sideedge(struct mesh *m, uint32_t a, uint32_t b)
+{
+	uint32_t edge;
+
+	if ((edge = sideget(&m->b.ringsides, a, b)) == 0 &&
+	    (edge = sideget(&m->b.ringsides, b, a)) == 0)
+		edge = ringalong(&m->b, m->b.bv[a - 1], m->b.bv[b - 1]);
+	return edge;
 }
 
 /* The ring that side a-b runs along, either way, or 0. */
 uint32_t
 sidering(struct mesh *m, uint32_t a, uint32_t b)
 {
-	uint32_t ring;
-
-	if ((ring = sideget(&m->b.ringsides, a, b)) == 0 &&
-	    (ring = sideget(&m->b.ringsides, b, a)) == 0)
-		ring = ringalong(&m->b, m->b.bv[a - 1], m->b.bv[b - 1]);
-	return ring;
+	return edgering(&m->b, sideedge(m, a, b));
 }
 
 /*
@@ -208,8 +215,8 @@ outsides_free(struct outsides *os)
 
 /*
  * The sides of one element only, the boundary of the region, each handed
- * to each() with its ring: the loop's when a piece of a ring edge gave it,
- * found among the rings' edges when it runs along a cell's side.
+ * to each() with its edge's tag: the loop's when a piece of a ring edge
+ * gave it, found among the rings' edges when it runs along a cell's side.
  */
 static void
 boundarysides(struct mesh *m, void (*each)(struct mesh *, uint32_t,
@@ -218,7 +225,7 @@ boundarysides(struct mesh *m, void (*each)(struct mesh *, uint32_t,
 	struct outsides all;
 	const struct elem *elems = m->elems;
 	size_t i;
-	uint32_t a, b, ring;
+	uint32_t a, b;
 	int k, n;
 
 	outsides_build(m, &all);
@@ -229,20 +236,24 @@ boundarysides(struct mesh *m, void (*each)(struct mesh *, uint32_t,
 			if (outsides_has(&all, b, a))
 				continue;
 			/* a piece taken backwards: rings that cross */
-			ring = sidering(m, a, b);
-			each(m, a, b, ring);
+			each(m, a, b, sideedge(m, a, b));
 		}
 	outsides_free(&all);
 }
 
 static void
-addringseg(struct mesh *m, uint32_t a, uint32_t b, uint32_t ring)
+addringseg(struct mesh *m, uint32_t a, uint32_t b, uint32_t edge)
 {
+	struct seg *s;
+	uint32_t ring = edgering(&m->b, edge);
+
 	addseg(m, a, b, 0);
-	m->segs[m->nsegs - 1].ring = ring;
+	s = &m->segs[m->nsegs - 1];
+	s->ring = ring;
+	s->edge = ring != 0 ? edge - (uint32_t)m->b.redge[ring - 1] : 0;
 }
 
-/* The boundary lines of -b, each with its ring. */
+/* The boundary lines of -b, each with its ring and the ring's edge. */
 void
 bfitboundary(struct mesh *m)
 {
@@ -275,18 +286,20 @@ addbend(struct bfit *bf, uint32_t v, uint32_t other, uint32_t ring,
 }
 
 static void
-addbends(struct mesh *m, uint32_t a, uint32_t b, uint32_t ring)
+addbends(struct mesh *m, uint32_t a, uint32_t b, uint32_t edge)
 {
+	uint32_t ring = edgering(&m->b, edge);
+
 	addbend(&m->b, a, b, ring, 1);
 	addbend(&m->b, b, a, ring, 0);
 }
 
 /* One walk for both, when no element changes between the check and -f. */
 static void
-addbendsegs(struct mesh *m, uint32_t a, uint32_t b, uint32_t ring)
+addbendsegs(struct mesh *m, uint32_t a, uint32_t b, uint32_t edge)
 {
-	addbends(m, a, b, ring);
-	addringseg(m, a, b, ring);
+	addbends(m, a, b, edge);
+	addringseg(m, a, b, edge);
 }
 
 static int

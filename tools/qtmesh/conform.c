@@ -216,7 +216,7 @@ addseg(struct mesh *m, uint32_t a, uint32_t b, uint32_t h)
 	m->segs[m->nsegs].a = a;
 	m->segs[m->nsegs].b = b;
 	m->segs[m->nsegs].h = h;
-	m->segs[m->nsegs].ring = 0;
+	m->segs[m->nsegs].ring = m->segs[m->nsegs].edge = 0;
 	m->nsegs++;
 }
 
@@ -249,7 +249,8 @@ meshleaf(struct mesh *m, struct leaf *l)
 	uint64_t px[8], py[8];
 	uint32_t id[8], h = 0;
 	int i, k, mask = m->conform ? l->hang : 0;
-	int segs = m->format == MSH || m->format == TRIANGLE;
+	int segs = m->format == MSH || m->format == TRIANGLE ||
+	    m->format == INP;
 
 	leafpoints(l, px, py);
 	corner_at(m->g.vt, px[0], py[0]);

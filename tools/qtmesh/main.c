@@ -22,7 +22,7 @@
  */
 #define MAXANGLE	30.0
 
-/* The formats of -f, in the order of QTREE, MSH, VTK and TRIANGLE. */
+/* The formats of -f, in the order of QTREE, MSH, VTK, TRIANGLE and INP. */
 static const struct writer {
 	const char	*name;
 	void		(*write)(const struct mesh *, size_t, const uint32_t *);
@@ -31,6 +31,7 @@ static const struct writer {
 	{ "msh",	writemsh },
 	{ "vtk",	writevtk },
 	{ "triangle",	writetriangle },
+	{ "inp",	writeinp },
 };
 #define NWRITERS	(sizeof(writers) / sizeof(writers[0]))
 
@@ -38,7 +39,7 @@ static void
 usage(int help)
 {
 	usageexit(help, "usage: qtmesh [-bHhrTv] [-a angle] [-c classes] "
-	    "[-f format] [-o basename] [-t fraction] [file]\n");
+	    "[-e family] [-f format] [-o basename] [-t fraction] [file]\n");
 }
 
 /* The format named, as its index in writers. */
@@ -60,14 +61,14 @@ formatnamed(const char *name)
 	return -1;
 }
 
-/* The options into m; 1 when -c was given, 2 when -a was. */
+/* The options into m; 1 when -c was given, 2 when -a was, 4 when -e was. */
 static int
 options(struct mesh *m, int argc, char *argv[])
 {
 	const char *end;
 	int ch, cflag = 0;
 
-	while ((ch = getopt(argc, argv, "HTa:bc:f:o:rt:vh")) != -1)
+	while ((ch = getopt(argc, argv, "HTa:bc:e:f:o:rt:vh")) != -1)
 		switch (ch) {
 		case 'a':
 			if (parsereal(optarg, &end, &m->minangle) < 0 ||
@@ -89,6 +90,10 @@ options(struct mesh *m, int argc, char *argv[])
 		case 'c':
 			m->keep = cell_optclasses(optarg);
 			cflag |= 1;
+			break;
+		case 'e':
+			m->family = inpfamily(optarg);
+			cflag |= 4;
 			break;
 		case 'f':
 			m->format = formatnamed(optarg);
@@ -121,6 +126,10 @@ checkoptions(struct mesh *m, int cflag)
 	if ((m->format == TRIANGLE) != (m->outbase != NULL))
 		die(2, m->format == TRIANGLE ? "-f triangle needs -o basename" :
 		    "-o is for -f triangle only");
+	if ((cflag & 4) && m->format != INP)
+		die(2, "-e names the elements of -f inp: not without it");
+	if (m->format == INP && !m->conform)
+		die(2, "-f inp writes a conforming mesh: not with -H");
 	if (m->tfrac >= 0 && !m->bfit)
 		die(2, "-t joins the cut pieces of -b: not without it");
 	if ((cflag & 2) && !m->bfit)
@@ -216,6 +225,31 @@ readtree(struct mesh *m, struct qtreader *r)
 	}
 }
 
+/*
+ * The command line, its words joined by spaces, for the heading of -f
+ * inp; a control character, which would end the heading's line, as '?'.
+ */
+static char *
+commandline(int argc, char *argv[])
+{
+	size_t len = 1, at = 0;
+	char *s, *p;
+	int i;
+
+	for (i = 0; i < argc; i++)
+		len += strlen(argv[i]) + 1;
+	s = xmalloc(len);
+	for (i = 0; i < argc; i++) {
+		if (i > 0)
+			s[at++] = ' ';
+		for (p = argv[i]; *p != '\0'; p++)
+			s[at++] = (unsigned char)*p < ' ' || *p == 127 ? '?' :
+			    *p;
+	}
+	s[at] = '\0';
+	return s;
+}
+
 /* -v: the mesh's figures and its bandwidth, bw0 before -r. */
 static void
 report(const struct mesh *m, size_t nv, uint32_t bw0)
@@ -254,6 +288,7 @@ main(int argc, char *argv[])
 	m.format = QTREE;
 	m.tfrac = -1;
 	m.minangle = 20;
+	m.command = commandline(argc, argv);
 	cflag = options(&m, argc, argv);
 	argc -= optind;
 	argv += optind;
@@ -285,5 +320,6 @@ main(int argc, char *argv[])
 	writers[m.format].write(&m, nv, inv);
 	closeout();
 	free(inv);
+	free((char *)m.command);
 	return 0;
 }

@@ -12,7 +12,7 @@
  * midpoint not numbered yet, a side along no ring.
  */
 
-enum { QTREE, MSH, VTK, TRIANGLE };	/* -f: main.c's table, in order */
+enum { QTREE, MSH, VTK, TRIANGLE, INP };	/* -f: main.c's table, in order */
 
 /* The smallest angle of the templates, arctan 1/2, in degrees. */
 #define TEMPLATE_ANGLE	26.565051177077990
@@ -56,6 +56,7 @@ struct seg {			/* a side on the boundary, a to b */
 	uint32_t	a, b;	/* 0: the midpoint of hang h */
 	uint32_t	h;
 	uint32_t	ring;	/* -b: the ring it runs along, from 1 */
+	uint32_t	edge;	/* -b: the ring's edge, from 1 in the ring */
 };
 
 /* Hanging midpoints not numbered yet: grid point to hang index + 1. */
@@ -85,8 +86,9 @@ struct outsides {
 };
 
 /*
- * Directed sides a -> b, as a table from the pair to a number: the ring
- * a side runs along, or what refine.c keeps of a side.
+ * Directed sides a -> b, as a table from the pair to a number: the edge
+ * of the stream's rings that a side runs along (bfit's edge tag), or what
+ * refine.c keeps of a side.
  */
 struct sidemap {
 	struct sideslot {
@@ -99,7 +101,7 @@ struct sidemap {
 /* A ring's edge along a grid line, for ringalong (boundary.c). */
 struct lineedge {
 	double		line, lo, hi;
-	uint32_t	ring;
+	uint32_t	edge;	/* its edge tag */
 };
 
 struct bend {			/* a boundary side at vertex v */
@@ -130,6 +132,13 @@ struct bfit {
 	struct point	*lpts;	/* every leaf's loops, one after another */
 	size_t		 nlpts, lptcap;
 	size_t		*lring, lringcap, nlring;	/* lring: as pring */
+	/*
+	 * The edges' tags: the stream's edges numbered from 1 over its rings,
+	 * ring r's n edges from redge[r - 1] + 1; per edge of the rings as
+	 * meshed (arcs made chords, as the cutter numbers them), its tag
+	 */
+	uint32_t	*cedge;
+	size_t		 ncedge, cedgecap, *redge, redgecap;
 	size_t		*llen, nllen, llencap;
 	size_t		*leafloops;	/* leaf i: loops [i] to [i + 1] */
 	size_t		*leafpts;	/* leaf i: its loops' points from */
@@ -142,7 +151,8 @@ struct bfit {
 	unsigned char	*templated;	/* leaf i: meshed by the templates */
 	struct point	*poly;	/* the loops of one leaf, points taken in */
 	size_t		 npoly, polycap, *plen, nplen, plencap;
-	/* per point of lpts and poly: the ring the loop runs along, or 0 */
+	/* per point of lpts and poly: the edge tag of what the loop runs
+	 * along from there, or 0 (a cell's side) */
 	size_t		*pring, npring, pringcap;
 	/* loops of no area, set aside from poly: points, rings and lengths */
 	struct point	*flat;
@@ -183,7 +193,9 @@ struct mesh {
 	int		 alltri;	/* -T, -f triangle: quads cut */
 	int		 renumber;	/* -r */
 	int		 verbose;	/* -v */
-	int		 format;	/* -f: QTREE, MSH, VTK or TRIANGLE */
+	int		 format;	/* -f: QTREE, MSH, VTK, TRIANGLE or INP */
+	int		 family;	/* -e: inp.c's element family */
+	const char	*command;	/* the command line, for inp's heading */
 	int		 bfit;		/* -b */
 	double		 tfrac;		/* -t, or -1 */
 	double		 minangle;	/* -a, in degrees; 0: none */
@@ -213,7 +225,9 @@ size_t	 gridmesh(struct mesh *);
 void	 addseg(struct mesh *, uint32_t, uint32_t, uint32_t);
 
 /* bfit.c: -b, the loops of the leaves cut into elements */
-void	 bfitring(struct mesh *, const struct ring *, long);
+void	 bfitring(struct mesh *, const struct ring *, long, const uint32_t *,
+	    size_t);
+uint32_t edgering(const struct bfit *, uint32_t);
 size_t	 bfitmesh(struct mesh *);
 void	 leafbox(const struct mesh *, const struct leaf *, double[2],
 	    double[2]);
@@ -229,6 +243,7 @@ uint32_t sideget(const struct sidemap *, uint32_t, uint32_t);
 void	 outsides_build(const struct mesh *, struct outsides *);
 int	 outsides_has(const struct outsides *, uint32_t, uint32_t);
 void	 outsides_free(struct outsides *);
+uint32_t sideedge(struct mesh *, uint32_t, uint32_t);
 uint32_t sidering(struct mesh *, uint32_t, uint32_t);
 void	 checkboundary(struct mesh *, int);
 void	 bfitboundary(struct mesh *);
@@ -255,7 +270,13 @@ uint32_t *inverse(const struct mesh *, size_t);
  * format, of nv vertices written as inv gives them
  */
 char	*cellpath(char *, int, uint64_t, uint64_t);
+size_t	 leafnel(const struct mesh *, size_t);
+void	 vertexxy(const struct mesh *, uint32_t, double *);
 void	 writeqtree(const struct mesh *, size_t, const uint32_t *);
 void	 writemsh(const struct mesh *, size_t, const uint32_t *);
 void	 writevtk(const struct mesh *, size_t, const uint32_t *);
 void	 writetriangle(const struct mesh *, size_t, const uint32_t *);
+
+/* inp.c: the Abaqus (CalculiX) deck, and -e's element families */
+int	 inpfamily(const char *);
+void	 writeinp(const struct mesh *, size_t, const uint32_t *);

@@ -427,7 +427,7 @@ static int
 splitside(struct refiner *r, uint32_t a, uint32_t b)
 {
 	struct mesh *m = r->m;
-	uint32_t code = sideget(&r->open, a, b), t, k, p, mid, ring, l, arc;
+	uint32_t code = sideget(&r->open, a, b), t, k, p, mid, edge, l, arc;
 	struct point on;
 	int32_t na, nb;
 	uint32_t v[3], u;
@@ -443,7 +443,7 @@ splitside(struct refiner *r, uint32_t a, uint32_t b)
 		aftermath(r);
 		return 1;
 	}
-	if ((ring = sidering(m, a, b)) == 0 || r->budget == 0)
+	if ((edge = sideedge(m, a, b)) == 0 || r->budget == 0)
 		goto frozen;
 	p = r->t[t].v[k];
 	if ((arc = arcchord(&m->b, *pt(r, a), *pt(r, b), &on)) != 0)
@@ -459,8 +459,8 @@ splitside(struct refiner *r, uint32_t a, uint32_t b)
 		ptab_put(&m->b.arcat, x, y, arc);
 	r->budget--;
 	sideput(&r->open, a, b, 0);
-	sideput(&m->b.ringsides, a, mid, ring);
-	sideput(&m->b.ringsides, mid, b, ring);
+	sideput(&m->b.ringsides, a, mid, edge);
+	sideput(&m->b.ringsides, mid, b, edge);
 	na = r->t[t].n[(k + 2) % 3];	/* across (p, a) */
 	nb = r->t[t].n[(k + 1) % 3];	/* across (b, p) */
 	u = newtri(r, r->t[t].leaf);

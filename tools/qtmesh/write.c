@@ -62,7 +62,7 @@ nextpath(char *path, const struct leaf *p, const struct leaf *l)
 }
 
 /* The number of leaf i's elements. */
-static size_t
+size_t
 leafnel(const struct mesh *m, size_t i)
 {
 	return m->bfit ? m->b.elstart[i + 1] - m->b.elstart[i] :
@@ -99,7 +99,7 @@ putline(FILE *fp, const long long *iv, int ni, const double *rv, int nr,
 		die(1, "write error");
 }
 
-static void
+void
 vertexxy(const struct mesh *m, uint32_t id, double *xy)
 {
 	uint64_t x, y;
