@@ -1,7 +1,9 @@
 #!/usr/bin/env bats
 # qtbalance: 2:1 balance by sides (and -c corners), checked against a tree
 # balanced by hand and by tests/oracle/levelgaps.awk and tests/oracle/levelgaps.sh, which
-# find the leaves that touch by their coordinates alone; the tree stays
+# find the leaves that touch by their coordinates alone; -k's grading by
+# tests/oracle/kbalance.awk, which finds the leaves too coarse for a rate
+# from the leaves alone; the tree stays
 # valid, its F and P areas stay, and the children of split P leaves are
 # classified as qtsplit classifies them.
 
@@ -139,6 +141,46 @@ balanced() {
 	side 033 2
 	EOF
 	sh "$TOP/tests/oracle/levelgaps.sh" l.qt | diff -u want -
+}
+
+# The coarser leaf of each pair that tests/oracle/levelgaps.awk finds, "side"
+# pairs alone or all.
+coarser() {
+	awk -v all="${2:-}" '$1 == "side" || all {
+		print "coarse", length($2) < length($3) ? $2 : $3 }' "$1" |
+	    LC_ALL=C sort -u
+}
+
+@test "tests/oracle/kbalance.awk finds at rate 1 the coarse leaves of levelgaps.awk's pairs, by nodes and by pairs" {
+	# on unbalanced trees, where there are leaves to find
+	for t in "$SAMPLES/amoeba.brep 5" "$SAMPLES/apple.xy 5" "$FIXTURES/lakes.xy 6"; do
+		set -- $t
+		polyread "$1" | qtsplit -l "$2" > t.qt
+		awk -f "$TOP/tests/oracle/levelgaps.awk" t.qt > gaps
+		coarser gaps > want
+		grep -q . want
+		for m in 0 1; do
+			awk -v k=1 -v side=1 -v pairs=$m -f "$TOP/tests/oracle/kbalance.awk" t.qt |
+			    LC_ALL=C sort | diff -u want -
+		done
+		coarser gaps all > want
+		for m in 0 1; do
+			awk -v k=1 -v pairs=$m -f "$TOP/tests/oracle/kbalance.awk" t.qt |
+			    LC_ALL=C sort | diff -u want -
+		done
+		# and at rates 2 and 3 the two routes agree, finding more
+		for k in 2 3; do
+			awk -v k=$k -f "$TOP/tests/oracle/kbalance.awk" t.qt > nodes
+			awk -v k=$k -v pairs=1 -f "$TOP/tests/oracle/kbalance.awk" t.qt |
+			    diff -u nodes -
+			[ "$(wc -l < nodes)" -gt "$(wc -l < want)" ]
+		done
+	done
+	lshape > l.qt
+	printf 'coarse %s\n' 1 2 > want
+	awk -v side=1 -f "$TOP/tests/oracle/kbalance.awk" l.qt | diff -u want -
+	printf 'coarse %s\n' 1 2 3 > want
+	awk -f "$TOP/tests/oracle/kbalance.awk" l.qt | diff -u want -
 }
 
 @test "small trees are balanced by comparing all pairs of leaves" {
