@@ -340,9 +340,21 @@ sameclasses() {
 
 @test "a bad option or two operands is a usage error" {
 	run -2 --separate-stderr qtbalance -x
-	[ "${stderr_lines[${#stderr_lines[@]}-1]}" = "usage: qtbalance [-chv] [file]" ]
+	[ "${stderr_lines[${#stderr_lines[@]}-1]}" = "usage: qtbalance [-chv] [-k rate] [file]" ]
 	run -2 --separate-stderr qtbalance a b
-	[ "$stderr" = "usage: qtbalance [-chv] [file]" ]
+	[ "$stderr" = "usage: qtbalance [-chv] [-k rate] [file]" ]
+}
+
+@test "a rate that is not an integer from 1 to 64 is a usage error" {
+	lshape > l.qt
+	for k in 0 65 -1 2x '' 1.5 ' 2' 99999999999999999999; do
+		run -2 --separate-stderr qtbalance -k "$k" l.qt
+		# (bats drops the space that an empty rate leaves at the end)
+		[ "$stderr" = "qtbalance: -k: rate must be an integer from 1 to 64:${k:+ $k}" ]
+		[ -z "$output" ]
+	done
+	run -0 qtbalance -k 64 l.qt
+	run -0 qtbalance -k 1 l.qt
 }
 
 @test "-v reports cells read and leaves split on stderr" {
@@ -392,4 +404,13 @@ sameclasses() {
 	diff -u want got
 	# the head passes as read, objects and op record
 	diff -u <(awk '$1 == "node" { exit } 1' x.qt) <(awk '$1 == "node" { exit } 1' b.qt)
+}
+
+@test "qtbalance(1)'s example of rates 2 and 4 prints what the page says" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 > a.qt
+	example "$TOP/man/qtbalance.1" 'qtbalance -k $k' > block
+	[ -s block ]
+	commands < block > run.sh
+	outputs < block > want
+	bash run.sh | diff -u want -
 }
