@@ -1,7 +1,9 @@
 #!/usr/bin/env bats
 # qtbalance: 2:1 balance by sides (and -c corners), checked against a tree
 # balanced by hand and by tests/oracle/levelgaps.awk and tests/oracle/levelgaps.sh, which
-# find the leaves that touch by their coordinates alone; the tree stays
+# find the leaves that touch by their coordinates alone; -k's grading by
+# tests/oracle/kbalance.awk, which finds the leaves too coarse for a rate
+# from the leaves alone; the tree stays
 # valid, its F and P areas stay, and the children of split P leaves are
 # classified as qtsplit classifies them.
 
@@ -139,6 +141,46 @@ balanced() {
 	side 033 2
 	EOF
 	sh "$TOP/tests/oracle/levelgaps.sh" l.qt | diff -u want -
+}
+
+# The coarser leaf of each pair that tests/oracle/levelgaps.awk finds, "side"
+# pairs alone or all.
+coarser() {
+	awk -v all="${2:-}" '$1 == "side" || all {
+		print "coarse", length($2) < length($3) ? $2 : $3 }' "$1" |
+	    LC_ALL=C sort -u
+}
+
+@test "tests/oracle/kbalance.awk finds at rate 1 the coarse leaves of levelgaps.awk's pairs, by nodes and by pairs" {
+	# on unbalanced trees, where there are leaves to find
+	for t in "$SAMPLES/amoeba.brep 5" "$SAMPLES/apple.xy 5" "$FIXTURES/lakes.xy 6"; do
+		set -- $t
+		polyread "$1" | qtsplit -l "$2" > t.qt
+		awk -f "$TOP/tests/oracle/levelgaps.awk" t.qt > gaps
+		coarser gaps > want
+		grep -q . want
+		for m in 0 1; do
+			awk -v k=1 -v side=1 -v pairs=$m -f "$TOP/tests/oracle/kbalance.awk" t.qt |
+			    LC_ALL=C sort | diff -u want -
+		done
+		coarser gaps all > want
+		for m in 0 1; do
+			awk -v k=1 -v pairs=$m -f "$TOP/tests/oracle/kbalance.awk" t.qt |
+			    LC_ALL=C sort | diff -u want -
+		done
+		# and at rates 2 and 3 the two routes agree, finding more
+		for k in 2 3; do
+			awk -v k=$k -f "$TOP/tests/oracle/kbalance.awk" t.qt > nodes
+			awk -v k=$k -v pairs=1 -f "$TOP/tests/oracle/kbalance.awk" t.qt |
+			    diff -u nodes -
+			[ "$(wc -l < nodes)" -gt "$(wc -l < want)" ]
+		done
+	done
+	lshape > l.qt
+	printf 'coarse %s\n' 1 2 > want
+	awk -v side=1 -f "$TOP/tests/oracle/kbalance.awk" l.qt | diff -u want -
+	printf 'coarse %s\n' 1 2 3 > want
+	awk -f "$TOP/tests/oracle/kbalance.awk" l.qt | diff -u want -
 }
 
 @test "small trees are balanced by comparing all pairs of leaves" {
@@ -298,9 +340,21 @@ sameclasses() {
 
 @test "a bad option or two operands is a usage error" {
 	run -2 --separate-stderr qtbalance -x
-	[ "${stderr_lines[${#stderr_lines[@]}-1]}" = "usage: qtbalance [-chv] [file]" ]
+	[ "${stderr_lines[${#stderr_lines[@]}-1]}" = "usage: qtbalance [-chv] [-k rate] [file]" ]
 	run -2 --separate-stderr qtbalance a b
-	[ "$stderr" = "usage: qtbalance [-chv] [file]" ]
+	[ "$stderr" = "usage: qtbalance [-chv] [-k rate] [file]" ]
+}
+
+@test "a rate that is not an integer from 1 to 64 is a usage error" {
+	lshape > l.qt
+	for k in 0 65 -1 2x '' 1.5 ' 2' 99999999999999999999; do
+		run -2 --separate-stderr qtbalance -k "$k" l.qt
+		# (bats drops the space that an empty rate leaves at the end)
+		[ "$stderr" = "qtbalance: -k: rate must be an integer from 1 to 64:${k:+ $k}" ]
+		[ -z "$output" ]
+	done
+	run -0 qtbalance -k 64 l.qt
+	run -0 qtbalance -k 1 l.qt
 }
 
 @test "-v reports cells read and leaves split on stderr" {
@@ -350,4 +404,13 @@ sameclasses() {
 	diff -u want got
 	# the head passes as read, objects and op record
 	diff -u <(awk '$1 == "node" { exit } 1' x.qt) <(awk '$1 == "node" { exit } 1' b.qt)
+}
+
+@test "qtbalance(1)'s example of rates 2 and 4 prints what the page says" {
+	polyread "$SAMPLES/amoeba.brep" | qtsplit -l 8 > a.qt
+	example "$TOP/man/qtbalance.1" 'qtbalance -k $k' > block
+	[ -s block ]
+	commands < block > run.sh
+	outputs < block > want
+	bash run.sh | diff -u want -
 }

@@ -1,16 +1,19 @@
 /*
  * qtbalance: refine a qtree(5) tree so that leaves sharing a side (with -c,
  * a side or a corner) differ by at most one level: the 2:1 balance of a
- * graded mesh.
+ * graded mesh; with -k K, so that the leaves of each level make a band at
+ * least K of them wide between shallower leaves and deeper: a grading rate.
  *
  * A tree is balanced when every node's neighbours of its own level, across
  * a side (and a corner), are cells of the tree, nodes or leaves: a leaf two
  * levels above a cell it touches lies over such a missing neighbour of that
- * cell's parent, and conversely.  So each node is checked once, those of
- * the input and those that splitting makes, and a missing neighbour's
- * parent is made a node by splitting the leaf that holds it down to it.
- * Splits only add nodes, so a node checked stays satisfied; the new nodes
- * lie above the one checked, and the tree gets no deeper.
+ * cell's parent, and conversely.  With -k K the neighbours are the cells of
+ * the node's level within K of it, across and up, corners included.  So
+ * each node is checked once, those of the input and those that splitting
+ * makes, and a missing neighbour's parent is made a node by splitting the
+ * leaf that holds it down to it.  Splits only add nodes, so a node checked
+ * stays satisfied; the new nodes lie above the one checked, and the tree
+ * gets no deeper.
  *
  * The tree is held as its nodes alone, in a cellset: a cell is in the tree
  * when its parent is a node, and each node's byte holds its four children's
@@ -27,6 +30,8 @@
 
 #include "qtree.h"
 
+#define MAXRATE	64	/* -k's largest */
+
 /* A child's code: 0 for a node, else a leaf's class. */
 enum { NODE, FULL, EMPTY, PART };
 
@@ -34,7 +39,8 @@ static const char classof[4] = { 0, 'F', 'E', 'P' };
 
 static struct options {
 	int	corners, verbose;
-} opt;
+	int	k;	/* -k: the neighbours' reach, in cells */
+} opt = { .k = 1 };
 
 /* The tree: its nodes, and the root's class when it is a leaf. */
 static struct tree {
@@ -76,7 +82,7 @@ static struct classifier {
 static void
 usage(int help)
 {
-	usageexit(help, "usage: qtbalance [-chv] [file]\n");
+	usageexit(help, "usage: qtbalance [-chv] [-k rate] [file]\n");
 }
 
 static int
@@ -301,9 +307,34 @@ need(int level, uint64_t ix, uint64_t iy, int dx, int dy)
 }
 
 /*
+ * Makes the cells of level within K of node (level, ix, iy) cells of the
+ * tree, K = -k's rate: makes their parents nodes, the cells of level - 1
+ * from (ix - K) / 2 to (ix + K) / 2 across and as many up, K + 1 by K + 1
+ * within the universe, each looked up once.
+ */
+static void
+checkblock(int level, uint64_t ix, uint64_t iy)
+{
+	uint64_t last = (UINT64_C(1) << level) - 1, k = (uint64_t)opt.k;
+	uint64_t x0 = (ix > k ? ix - k : 0) >> 1, y0 = (iy > k ? iy - k : 0) >> 1;
+	uint64_t x1 = (last - ix > k ? ix + k : last) >> 1;
+	uint64_t y1 = (last - iy > k ? iy + k : last) >> 1;
+	uint64_t px, py;
+
+	for (py = y0; py <= y1; py++)
+		for (px = x0; px <= x1; px++) {
+			int top = cellset_above(t.nodes, level - 1, px, py);
+
+			if (top < level - 1)
+				splitdown(top, level - 1, px, py);
+		}
+}
+
+/*
  * Makes the neighbours of node (level, ix, iy) cells of the tree: makes
  * their parents nodes.  The parent of a neighbour is the node's parent, or
  * its neighbour on the node's side: across a side, or with -c a corner.
+ * With -k above 1 the neighbours are the block of checkblock.
  */
 static void
 check(int level, uint64_t ix, uint64_t iy)
@@ -312,6 +343,10 @@ check(int level, uint64_t ix, uint64_t iy)
 
 	if (level == 0)
 		return;
+	if (opt.k > 1) {
+		checkblock(level, ix, iy);
+		return;
+	}
 	need(level - 1, ix >> 1, iy >> 1, dx, 0);
 	need(level - 1, ix >> 1, iy >> 1, 0, dy);
 	if (opt.corners)
@@ -428,13 +463,22 @@ main(int argc, char *argv[])
 {
 	struct qtreader *r;
 	char path[QT_MAXLEVEL + 2];
+	const char *end;
+	long long val;
 	int ch;
 
 	xsetprogname(argv[0]);
-	while ((ch = getopt(argc, argv, "cvh")) != -1)
+	while ((ch = getopt(argc, argv, "ck:vh")) != -1)
 		switch (ch) {
 		case 'c':
 			opt.corners = 1;
+			break;
+		case 'k':
+			if (parselong(optarg, &end, &val) < 0 || *end != '\0' ||
+			    val < 1 || val > MAXRATE)
+				die(2, "-k: rate must be an integer from 1 to "
+				    "%d: %s", MAXRATE, optarg);
+			opt.k = val;
 			break;
 		case 'v':
 			opt.verbose = 1;
