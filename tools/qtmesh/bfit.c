@@ -174,10 +174,10 @@ edgering(const struct bfit *b, uint32_t edge)
 }
 
 static void
-addlpt(struct bfit *b, double x, double y, size_t ring)
+addlpt(struct bfit *b, double x, double y, size_t edge)
 {
 	addpoint(&b->lpts, &b->nlpts, &b->lptcap, x, y);
-	addsize(&b->lring, &b->nlring, &b->lringcap, ring);
+	addsize(&b->ledge, &b->nledge, &b->ledgecap, edge);
 }
 
 static void
@@ -466,10 +466,10 @@ bfitloops(struct mesh *m)
 }
 
 static void
-addpoly(struct bfit *b, double x, double y, size_t ring)
+addpoly(struct bfit *b, double x, double y, size_t edge)
 {
 	addpoint(&b->poly, &b->npoly, &b->polycap, x, y);
-	addsize(&b->pring, &b->npring, &b->pringcap, ring);
+	addsize(&b->pedge, &b->npedge, &b->pedgecap, edge);
 }
 
 /*
@@ -625,7 +625,7 @@ leafpoly(struct bfit *b, size_t i, const double x[2], const double y[2])
 {
 	size_t j, k, at, start;
 
-	b->npoly = b->nplen = b->npring = 0;
+	b->npoly = b->nplen = b->npedge = 0;
 	at = b->leafpts[i];
 	for (j = b->leafloops[i]; j < b->leafloops[i + 1];
 	    at += b->llen[j++]) {
@@ -639,7 +639,7 @@ leafpoly(struct bfit *b, size_t i, const double x[2], const double y[2])
 
 			if (p.x == q.x && p.y == q.y)
 				continue;	/* a side snapped away */
-			addpoly(b, p.x, p.y, b->lring[at + k]);
+			addpoly(b, p.x, p.y, b->ledge[at + k]);
 			if (p.x == q.x && (p.x == x[0] || p.x == x[1]))
 				takein(b, 1, p.x, p.y, q.y);
 			else if (p.y == q.y && (p.y == y[0] || p.y == y[1]))
@@ -649,12 +649,12 @@ leafpoly(struct bfit *b, size_t i, const double x[2], const double y[2])
 			for (k = start; k < b->npoly; k++) {
 				addpoint(&b->flat, &b->nflat, &b->flatcap,
 				    b->poly[k].x, b->poly[k].y);
-				addsize(&b->flring, &b->nflring, &b->flringcap,
-				    b->pring[k]);
+				addsize(&b->fledge, &b->nfledge, &b->fledgecap,
+				    b->pedge[k]);
 			}
 			addsize(&b->fllen, &b->nfllen, &b->fllencap,
 			    b->npoly - start);
-			b->npoly = b->npring = start;
+			b->npoly = b->npedge = start;
 			continue;
 		}
 		addsize(&b->plen, &b->nplen, &b->plencap, b->npoly - start);
@@ -693,10 +693,10 @@ meshbfit(struct mesh *m, size_t i)
 		addbelem(m, v, 3);
 	}
 	/* the sides along rings, their vertices numbered by now */
-	ringsidesof(b, b->poly, b->pring, b->plen, b->nplen);
+	ringsidesof(b, b->poly, b->pedge, b->plen, b->nplen);
 	/* a flat loop's, which neighbours' elements have along their sides */
-	ringsidesof(b, b->flat, b->flring, b->fllen, b->nfllen);
-	b->nflat = b->nflring = b->nfllen = 0;
+	ringsidesof(b, b->flat, b->fledge, b->fllen, b->nfllen);
+	b->nflat = b->nfledge = b->nfllen = 0;
 }
 
 /* The mesh of -b: its vertices. */

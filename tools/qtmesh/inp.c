@@ -15,15 +15,15 @@
 #include "qtree.h"
 #include "qtmesh.h"
 
-/* The element families of -e, by nodes: 3, 4, then with -2 6 and 8. */
+/* The element families of -e: the types of triangles and quads. */
 static const struct family {
 	const char	*name;
-	const char	*type[4];
+	const char	*type[2];
 } families[] = {
-	{ "CPS",	{ "CPS3", "CPS4", "CPS6", "CPS8" } },
-	{ "CPE",	{ "CPE3", "CPE4", "CPE6", "CPE8" } },
-	{ "CAX",	{ "CAX3", "CAX4", "CAX6", "CAX8" } },
-	{ "DC2D",	{ "DC2D3", "DC2D4", "DC2D6", "DC2D8" } },
+	{ "CPS",	{ "CPS3", "CPS4" } },
+	{ "CPE",	{ "CPE3", "CPE4" } },
+	{ "CAX",	{ "CAX3", "CAX4" } },
+	{ "DC2D",	{ "DC2D3", "DC2D4" } },
 };
 #define NFAMILIES	(sizeof(families) / sizeof(families[0]))
 
@@ -172,6 +172,32 @@ boundaryset(const struct mesh *m, const struct sidemap *sides,
 	}
 }
 
+/* The sets of each ring, Rr, and of each of its edges, RrEk. */
+static void
+ringsets(const struct mesh *m, const struct sidemap *sides, struct seg *segs,
+    uint32_t *buf)
+{
+	char name[64];
+	size_t i, j, k, e;
+
+	qsort(segs, m->nsegs, sizeof(*segs), cmpseg);
+	for (i = 0; i < m->nsegs; i = j) {
+		for (j = i; j < m->nsegs && segs[j].ring == segs[i].ring; j++)
+			continue;
+		snprintf(name, sizeof(name), "R%lu",
+		    (unsigned long)segs[i].ring);
+		boundaryset(m, sides, segs + i, j - i, name, buf);
+		for (k = i; k < j; k = e) {
+			for (e = k; e < j && segs[e].edge == segs[k].edge; e++)
+				continue;
+			snprintf(name, sizeof(name), "R%luE%lu",
+			    (unsigned long)segs[k].ring,
+			    (unsigned long)segs[k].edge);
+			boundaryset(m, sides, segs + k, e - k, name, buf);
+		}
+	}
+}
+
 /* The boundary's sets: ring by ring and edge by edge, or the one set. */
 static void
 boundarysets(const struct mesh *m)
@@ -179,8 +205,6 @@ boundarysets(const struct mesh *m)
 	struct seg *segs;
 	struct sidemap sides;
 	uint32_t *buf;
-	char name[64];
-	size_t i, j, k;
 
 	if (m->nsegs == 0)
 		return;
@@ -188,30 +212,10 @@ boundarysets(const struct mesh *m)
 	buf = xreallocarray(NULL, 2 * m->nsegs, sizeof(*buf));
 	segs = xreallocarray(NULL, m->nsegs, sizeof(*segs));
 	memcpy(segs, m->segs, m->nsegs * sizeof(*segs));
-	if (!m->bfit) {
+	if (!m->bfit)
 		boundaryset(m, &sides, segs, m->nsegs, "BOUNDARY", buf);
-		goto done;
-	}
-	qsort(segs, m->nsegs, sizeof(*segs), cmpseg);
-	for (i = 0; i < m->nsegs; i = j) {
-		for (j = i; j < m->nsegs && segs[j].ring == segs[i].ring; j++)
-			continue;
-		snprintf(name, sizeof(name), "R%lu",
-		    (unsigned long)segs[i].ring);
-		boundaryset(m, &sides, segs + i, j - i, name, buf);
-		for (k = i; k < j; ) {
-			size_t e = k;
-
-			while (e < j && segs[e].edge == segs[k].edge)
-				e++;
-			snprintf(name, sizeof(name), "R%luE%lu",
-			    (unsigned long)segs[k].ring,
-			    (unsigned long)segs[k].edge);
-			boundaryset(m, &sides, segs + k, e - k, name, buf);
-			k = e;
-		}
-	}
-done:
+	else
+		ringsets(m, &sides, segs, buf);
 	free(sides.slot);
 	free(segs);
 	free(buf);

@@ -131,7 +131,7 @@ struct bfit {
 	struct earclip	*ear;
 	struct point	*lpts;	/* every leaf's loops, one after another */
 	size_t		 nlpts, lptcap;
-	size_t		*lring, lringcap, nlring;	/* lring: as pring */
+	size_t		*ledge, ledgecap, nledge;	/* ledge: as pedge */
 	/*
 	 * The edges' tags: the stream's edges numbered from 1 over its rings,
 	 * ring r's n edges from redge[r - 1] + 1; per edge of the rings as
@@ -151,12 +151,14 @@ struct bfit {
 	unsigned char	*templated;	/* leaf i: meshed by the templates */
 	struct point	*poly;	/* the loops of one leaf, points taken in */
 	size_t		 npoly, polycap, *plen, nplen, plencap;
-	/* per point of lpts and poly: the edge tag of what the loop runs
-	 * along from there, or 0 (a cell's side) */
-	size_t		*pring, npring, pringcap;
-	/* loops of no area, set aside from poly: points, rings and lengths */
+	/*
+	 * per point of lpts and poly: the edge tag of what the loop runs
+	 * along from there, or 0 (a cell's side)
+	 */
+	size_t		*pedge, npedge, pedgecap;
+	/* loops of no area, set aside from poly: points, edge tags, lengths */
 	struct point	*flat;
-	size_t		 nflat, flatcap, *flring, nflring, flringcap, *fllen,
+	size_t		 nflat, flatcap, *fledge, nfledge, fledgecap, *fllen,
 			 nfllen, fllencap;
 	/* the rings as read, for sides along grid lines */
 	struct point	*rpts;
