@@ -12,7 +12,7 @@
 # and 19 s by file on this project's 2-CPU machine, 2026-12-03).  make
 # check-long (QTREE_LONG=only) hands it tests one at a time, but only the
 # long ones (bats -f with tests/long.txt's lines), so that a file's long
-# tests run side by side; make sanitize (QTREE_LONG=all) likewise, all.
+# tests run side by side; make sanitize runs what make test runs.
 set -u
 cd "$(dirname "$0")/.." || exit 2
 jobs=${JOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}

@@ -11,9 +11,10 @@ export TOP PATH FIXTURES SAMPLES SHARED
 export LC_ALL=C
 
 # The slowest tests (tests/long.txt) run with QTREE_LONG=only (make
-# check-long) or all (make sanitize), and are skipped otherwise (make test);
-# then the test works in a scratch directory of its own.  A file with a
-# setup() of its own calls qtree_setup first.
+# check-long) or all (by hand: QTREE_LONG=all sh tests/run.sh), and are
+# skipped otherwise (make test, make sanitize); then the test works in a
+# scratch directory of its own.  A file with a setup() of its own calls
+# qtree_setup first.
 qtree_setup() {
 	local long=0
 	grep -qxF -- "$BATS_TEST_DESCRIPTION" "$TOP/tests/long.txt" && long=1
