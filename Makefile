@@ -197,10 +197,14 @@ bench-shards: all
 	    cat tools/bench/results/shards.txt
 
 # qtree's boundary-fitted mesh against Gmsh's: elements, angles, P1 error,
-# time and memory, one table, saved as tools/bench/results/mesh.txt.
+# time and memory, one table, saved as tools/bench/results/mesh.txt; then
+# the stress concentration CalculiX gets on the plate with a hole from
+# each, saved as tools/bench/results/kt.txt.
 bench-mesh: all
 	sh tools/bench/benchmesh.sh > tools/bench/results/mesh.txt.new && \
 	    mv tools/bench/results/mesh.txt.new tools/bench/results/mesh.txt && cat tools/bench/results/mesh.txt
+	sh tools/bench/benchkt.sh > tools/bench/results/kt.txt.new && \
+	    mv tools/bench/results/kt.txt.new tools/bench/results/kt.txt && cat tools/bench/results/kt.txt
 
 # Each parser under AFL++ for FUZZTIME seconds (default 60), or FUZZEXECS
 # executions; FUZZMODE=fast for the persistent build (tests/fuzz/run.sh).

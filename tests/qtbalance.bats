@@ -414,3 +414,20 @@ sameclasses() {
 	outputs < block > want
 	bash run.sh | diff -u want -
 }
+
+@test "without -k the rate follows the depth: 1 to level 8, 2 at 9 and 10, 4 at 11" {
+	polyread "$SAMPLES/amoeba.brep" > a.poly
+	for lk in 7:1 8:1 9:2 10:2 11:4; do
+		l=${lk%:*} k=${lk#*:}
+		qtsplit -l "$l" a.poly > t.qt
+		qtbalance t.qt > d.qt
+		qtbalance -k "$k" t.qt | cmp - d.qt
+		# and not the rate next to it (the rates' outputs differ)
+		[ "$k" -eq 1 ] || ! qtbalance -k $((k / 2)) t.qt | cmp -s - d.qt
+	done
+	# the level-11 tree graded at rate 4 by the leaves alone
+	run -0 awk -v k=4 -f "$TOP/tests/oracle/kbalance.awk" d.qt
+	[ -z "$output" ]
+	run -0 awk -v k=8 -f "$TOP/tests/oracle/kbalance.awk" d.qt
+	[ -n "$output" ]
+}

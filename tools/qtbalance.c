@@ -39,14 +39,15 @@ static const char classof[4] = { 0, 'F', 'E', 'P' };
 
 static struct options {
 	int	corners, verbose;
-	int	k;	/* -k: the neighbours' reach, in cells */
-} opt = { .k = 1 };
+	int	k;	/* -k: the neighbours' reach, in cells; 0 till chosen */
+} opt;
 
 /* The tree: its nodes, and the root's class when it is a leaf. */
 static struct tree {
 	struct cellset	*nodes;
 	char		 rootclass;	/* 0: the root is a node */
 	unsigned long long ncells, nnodes, nsplit;
+	int		 depth;		/* the deepest cell's level */
 	const char	*name;		/* of the input, for messages */
 } t;
 
@@ -159,6 +160,8 @@ addcell(struct qtreader *r, const struct cell *c)
 		    "writes it", c->path);
 	closeopen(r, c->level);
 	t.ncells++;
+	if (c->level > t.depth)
+		t.depth = c->level;
 	if (c->level == 0) {
 		t.rootclass = c->class;
 	} else {
@@ -353,6 +356,25 @@ check(int level, uint64_t ix, uint64_t iy)
 		need(level - 1, ix >> 1, iy >> 1, dx, dy);
 }
 
+/*
+ * The rate when -k is not given: 1 to level 8, then doubled every second
+ * level.  A band K leaves wide at each level puts about K^2 times the
+ * levels' count of nodes in the interior, against 2^depth along the
+ * boundary; K growing as the square root of 2^depth keeps the two in step,
+ * so a deeper tree refines the whole region, not only a thinner band
+ * along the rings (on the plate with a hole the stress concentration's
+ * error then falls with the level; at rate 1 it grows).
+ */
+static int
+defaultrate(int depth)
+{
+	int k = 1;
+
+	for (depth -= 7; depth >= 2 && k < MAXRATE; depth -= 2)
+		k *= 2;
+	return k;
+}
+
 /* Checks the nodes made and not yet checked. */
 static void
 drain(void)
@@ -497,6 +519,8 @@ main(int argc, char *argv[])
 	t.name = qt_name(r);
 	qt_header();
 	readtree(r);
+	if (opt.k == 0)
+		opt.k = defaultrate(t.depth);
 	if (t.rootclass == 0)
 		balance(0, 0, 0);
 	report(1);
