@@ -15,15 +15,18 @@
 #include "qtree.h"
 #include "qtmesh.h"
 
-/* The element families of -e: the types of triangles and quads. */
+/*
+ * The element families of -e: the types of triangles and quads, first
+ * order and (-2) second.
+ */
 static const struct family {
 	const char	*name;
-	const char	*type[2];
+	const char	*type[2][2];
 } families[] = {
-	{ "CPS",	{ "CPS3", "CPS4" } },
-	{ "CPE",	{ "CPE3", "CPE4" } },
-	{ "CAX",	{ "CAX3", "CAX4" } },
-	{ "DC2D",	{ "DC2D3", "DC2D4" } },
+	{ "CPS",	{ { "CPS3", "CPS4" }, { "CPS6", "CPS8" } } },
+	{ "CPE",	{ { "CPE3", "CPE4" }, { "CPE6", "CPE8" } } },
+	{ "CAX",	{ { "CAX3", "CAX4" }, { "CAX6", "CAX8" } } },
+	{ "DC2D",	{ { "DC2D3", "DC2D4" }, { "DC2D6", "DC2D8" } } },
 };
 #define NFAMILIES	(sizeof(families) / sizeof(families[0]))
 
@@ -60,6 +63,56 @@ putint(struct line *l, long long v)
 	l->p = fmtint(l->p, v);
 }
 
+/*
+ * s with its exponent's '+' and leading zeros dropped, and the zeros
+ * that end its digits before it: "1.50e-05" as "1.5e-5".
+ */
+static void
+squeeze(char *s)
+{
+	char *e = strchr(s, 'e'), *d, *w;
+
+	if (e == NULL)
+		return;
+	for (w = e; w > s && w[-1] == '0'; w--)
+		continue;
+	if (w > s && w[-1] == '.')
+		w--;
+	*w++ = 'e';
+	d = e + 1;
+	if (*d == '-')
+		*w++ = *d++;
+	else if (*d == '+')
+		d++;
+	while (*d == '0' && d[1] != '\0')
+		d++;
+	memmove(w, d, strlen(d) + 1);
+}
+
+/*
+ * CalculiX reads a number from its first 20 characters (a Fortran f20.0
+ * field) and refuses a longer one: v in the shortest digits that read
+ * back when they fit, else rounded to the most digits that do (16 or 15,
+ * a relative error under 5e-16).  Where no setlocale is called, printf's
+ * decimal point is the C locale's.
+ */
+#define INPWIDTH	20
+
+static char *
+inpreal(char *p, double v)
+{
+	char s[40];
+	int d;
+
+	fmtreal(s, v);
+	squeeze(s);
+	for (d = 16; strlen(s) > INPWIDTH && d > 1; d--) {
+		snprintf(s, sizeof(s), "%.*e", d - 1, v);
+		squeeze(s);
+	}
+	return stpcpy(p, s);
+}
+
 static void
 putreal(struct line *l, double v)
 {
@@ -67,7 +120,7 @@ putreal(struct line *l, double v)
 		*l->p++ = ',';
 		*l->p++ = ' ';
 	}
-	l->p = fmtreal(l->p, v);
+	l->p = inpreal(l->p, v);
 }
 
 static void
@@ -143,21 +196,24 @@ cmpseg(const void *va, const void *vb)
 
 /*
  * The node set and the surface of the boundary sides segs[0 .. n), named
- * name; buf has room for 2 n numbers.
+ * name, their mid-side nodes with -2 (nv corners before them); buf has
+ * room for 3 n numbers.
  */
 static void
-boundaryset(const struct mesh *m, const struct sidemap *sides,
+boundaryset(const struct mesh *m, size_t nv, const struct sidemap *sides,
     const struct seg *segs, size_t n, const char *name, uint32_t *buf)
 {
 	struct line l;
-	size_t i, nn;
+	size_t i, nn = 0;
 	uint32_t face;
 
 	for (i = 0; i < n; i++) {
-		buf[2 * i] = m->perm[segs[i].a - 1];
-		buf[2 * i + 1] = m->perm[segs[i].b - 1];
+		buf[nn++] = m->perm[segs[i].a - 1];
+		buf[nn++] = m->perm[segs[i].b - 1];
+		if (m->order == 2)
+			buf[nn++] = (uint32_t)(nv + segmid(m, &segs[i]));
 	}
-	nn = uniq(buf, 2 * n);
+	nn = uniq(buf, nn);
 	printf("*NSET, NSET=%s\n", name);
 	putlist(buf, nn);
 	printf("*SURFACE, NAME=%s, TYPE=ELEMENT\n", name);
@@ -174,8 +230,8 @@ boundaryset(const struct mesh *m, const struct sidemap *sides,
 
 /* The sets of each ring, Rr, and of each of its edges, RrEk. */
 static void
-ringsets(const struct mesh *m, const struct sidemap *sides, struct seg *segs,
-    uint32_t *buf)
+ringsets(const struct mesh *m, size_t nv, const struct sidemap *sides,
+    struct seg *segs, uint32_t *buf)
 {
 	char name[64];
 	size_t i, j, k, e;
@@ -186,21 +242,22 @@ ringsets(const struct mesh *m, const struct sidemap *sides, struct seg *segs,
 			continue;
 		snprintf(name, sizeof(name), "R%lu",
 		    (unsigned long)segs[i].ring);
-		boundaryset(m, sides, segs + i, j - i, name, buf);
+		boundaryset(m, nv, sides, segs + i, j - i, name, buf);
 		for (k = i; k < j; k = e) {
 			for (e = k; e < j && segs[e].edge == segs[k].edge; e++)
 				continue;
 			snprintf(name, sizeof(name), "R%luE%lu",
 			    (unsigned long)segs[k].ring,
 			    (unsigned long)segs[k].edge);
-			boundaryset(m, sides, segs + k, e - k, name, buf);
+			boundaryset(m, nv, sides, segs + k, e - k, name,
+			    buf);
 		}
 	}
 }
 
 /* The boundary's sets: ring by ring and edge by edge, or the one set. */
 static void
-boundarysets(const struct mesh *m)
+boundarysets(const struct mesh *m, size_t nv)
 {
 	struct seg *segs;
 	struct sidemap sides;
@@ -209,13 +266,13 @@ boundarysets(const struct mesh *m)
 	if (m->nsegs == 0)
 		return;
 	elemsides(m, &sides);
-	buf = xreallocarray(NULL, 2 * m->nsegs, sizeof(*buf));
+	buf = xreallocarray(NULL, 3 * m->nsegs, sizeof(*buf));
 	segs = xreallocarray(NULL, m->nsegs, sizeof(*segs));
 	memcpy(segs, m->segs, m->nsegs * sizeof(*segs));
 	if (!m->bfit)
-		boundaryset(m, &sides, segs, m->nsegs, "BOUNDARY", buf);
+		boundaryset(m, nv, &sides, segs, m->nsegs, "BOUNDARY", buf);
 	else
-		ringsets(m, &sides, segs, buf);
+		ringsets(m, nv, &sides, segs, buf);
 	free(sides.slot);
 	free(segs);
 	free(buf);
@@ -243,14 +300,15 @@ writeinp(const struct mesh *m, size_t nv, const uint32_t *inv)
 	const struct family *f = &families[m->family];
 	const struct elem *elems = m->elems;
 	struct line l;
+	long long v[8];
 	uint32_t *buf;
 	double xy[2];
-	size_t i;
-	int k, n, pass;
+	size_t i, k, n;
+	int pass;
 
 	printf("*HEADING\n%s\n*NODE, NSET=NALL\n", m->command);
-	for (i = 0; i < nv; i++) {
-		vertexxy(m, inv[i], xy);
+	for (i = 0; i < nv + m->nmid; i++) {
+		nodexy(m, nv, inv, i, xy);
 		startline(&l);
 		putint(&l, (long long)i + 1);
 		putreal(&l, xy[0]);
@@ -264,14 +322,15 @@ writeinp(const struct mesh *m, size_t nv, const uint32_t *inv)
 		if (i == m->nelems)
 			continue;
 		printf("*ELEMENT, TYPE=%s, ELSET=EALL\n",
-		    f->type[pass - 3]);
+		    f->type[m->order - 1][pass - 3]);
 		for (; i < m->nelems; i++) {
-			if ((n = nverts(&elems[i])) != pass)
+			if (nverts(&elems[i]) != pass)
 				continue;
+			n = elemnodes(m, i, nv, v);
 			startline(&l);
 			putint(&l, (long long)i + 1);
 			for (k = 0; k < n; k++)
-				putint(&l, m->perm[elems[i].v[k] - 1]);
+				putint(&l, v[k]);
 			endline(&l);
 		}
 	}
@@ -280,5 +339,5 @@ writeinp(const struct mesh *m, size_t nv, const uint32_t *inv)
 	classset(m, 'P', "PARTIAL", buf);
 	classset(m, 'E', "EMPTY", buf);
 	free(buf);
-	boundarysets(m);
+	boundarysets(m, nv);
 }

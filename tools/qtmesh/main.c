@@ -38,7 +38,7 @@ static const struct writer {
 static void
 usage(int help)
 {
-	usageexit(help, "usage: qtmesh [-bHhrTv] [-a angle] [-c classes] "
+	usageexit(help, "usage: qtmesh [-2bHhrTv] [-a angle] [-c classes] "
 	    "[-e family] [-f format] [-o basename] [-t fraction] [file]\n");
 }
 
@@ -68,8 +68,11 @@ options(struct mesh *m, int argc, char *argv[])
 	const char *end;
 	int ch, cflag = 0;
 
-	while ((ch = getopt(argc, argv, "HTa:bc:e:f:o:rt:vh")) != -1)
+	while ((ch = getopt(argc, argv, "2HTa:bc:e:f:o:rt:vh")) != -1)
 		switch (ch) {
+		case '2':
+			m->order = 2;
+			break;
 		case 'a':
 			if (parsereal(optarg, &end, &m->minangle) < 0 ||
 			    *end != '\0' || !(m->minangle >= 0 &&
@@ -144,6 +147,11 @@ checkoptions(struct mesh *m, int cflag)
 		    "with %s", (cflag & 1) ? "-c" : "-H");
 	if (m->format == TRIANGLE)
 		m->alltri = 1;
+	if (m->order == 2 && (m->format == QTREE || m->format == TRIANGLE))
+		die(2, "-2 writes -f msh, vtk or inp: the %s format holds "
+		    "corners only", m->format == QTREE ? "qtree" : "triangle");
+	if (m->order == 2 && !m->conform)
+		die(2, "-2 needs a conforming mesh: not with -H");
 }
 
 /* A kept leaf as read: its place, class and line, its sides not yet known. */
@@ -256,6 +264,8 @@ report(const struct mesh *m, size_t nv, uint32_t bw0)
 {
 	fprintf(stderr, "%s: %zu leaves, %zu vertices, %zu elements",
 	    progname, m->nleaves, nv, m->nelems);
+	if (m->order == 2)
+		fprintf(stderr, ", %zu mid-side nodes", m->nmid);
 	if (!m->conform)
 		fprintf(stderr, ", %zu hanging vertices", m->g.nhangs);
 	fprintf(stderr, "\n");
@@ -288,6 +298,7 @@ main(int argc, char *argv[])
 	m.format = QTREE;
 	m.tfrac = -1;
 	m.minangle = 20;
+	m.order = 1;
 	m.command = commandline(argc, argv);
 	cflag = options(&m, argc, argv);
 	argc -= optind;
@@ -314,6 +325,8 @@ main(int argc, char *argv[])
 		bw0 = bandwidth(&m);
 	if (m.renumber && nv > 0)
 		rcm(&m, nv);
+	if (m.order == 2)
+		midnodes(&m);
 	if (m.verbose)
 		report(&m, nv, bw0);
 	inv = inverse(&m, nv);

@@ -197,6 +197,7 @@ struct mesh {
 	int		 verbose;	/* -v */
 	int		 format;	/* -f: QTREE, MSH, VTK, TRIANGLE or INP */
 	int		 family;	/* -e: inp.c's element family */
+	int		 order;		/* 2 with -2, else 1 */
 	const char	*command;	/* the command line, for inp's heading */
 	int		 bfit;		/* -b */
 	double		 tfrac;		/* -t, or -1 */
@@ -216,6 +217,15 @@ struct mesh {
 	uint32_t	*perm;	/* new number of vertex i + 1, with -r */
 	struct grid	 g;
 	struct bfit	 b;
+	/*
+	 * -2: side k of element e has mid-side node mid[4 e + k], from 1
+	 * (0: a triangle's fourth), numbered after the nv corners and placed
+	 * at midxy; midat maps a side, its smaller vertex first, to it
+	 */
+	uint32_t	*mid;
+	double		*midxy;
+	size_t		 nmid, midxycap;
+	struct sidemap	 midat;
 };
 
 /* tree.c: the cell set, what lies across each side of each leaf */
@@ -261,6 +271,16 @@ void	 refine(struct mesh *);
 
 /* join.c: -t, small pieces joined to their neighbours */
 void	 jointiny(struct mesh *);
+
+/*
+ * order2.c: -2, the mid-side nodes; a boundary side's; an element's nodes
+ * and a node's place in the numbers written
+ */
+void	 midnodes(struct mesh *);
+uint32_t segmid(const struct mesh *, const struct seg *);
+size_t	 elemnodes(const struct mesh *, size_t, size_t, long long *);
+void	 nodexy(const struct mesh *, size_t, const uint32_t *, size_t,
+	    double *);
 
 /* rcm.c: bandwidth and reverse Cuthill-McKee */
 uint32_t bandwidth(const struct mesh *);

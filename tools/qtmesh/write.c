@@ -211,44 +211,49 @@ mshnames(const struct mesh *m)
 	printf("$EndPhysicalNames\n");
 }
 
+/*
+ * The element types of Gmsh and VTK by order, first and second: a line,
+ * a triangle and a quad.
+ */
+static const int mshtype[2][3] = { { 1, 2, 3 }, { 8, 9, 16 } };
+static const int vtktype[2][3] = { { 3, 5, 9 }, { 21, 22, 23 } };
+
 void
 writemsh(const struct mesh *m, size_t nv, const uint32_t *inv)
 {
 	const uint32_t *perm = m->perm;
-	const struct elem *elems = m->elems;
-	long long iv[9];
+	long long iv[5 + 8];
 	double xy[3];
-	size_t i, e = 0, j, id = 0;
-	int k, n;
+	size_t i, e = 0, j, id = 0, n;
 
 	mshnames(m);
-	printf("$Nodes\n%zu\n", nv);
-	for (i = 0; i < nv; i++) {
+	printf("$Nodes\n%zu\n", nv + m->nmid);
+	for (i = 0; i < nv + m->nmid; i++) {
 		iv[0] = i + 1;
-		vertexxy(m, inv[i], xy);
+		nodexy(m, nv, inv, i, xy);
 		xy[2] = 0;
 		putline(stdout, iv, 1, xy, 3, "");
 	}
 	printf("$EndNodes\n$Elements\n%zu\n", m->nelems + m->nsegs);
 	for (i = 0; i < m->nleaves; i++)
 		for (j = 0; j < leafnel(m, i); j++, e++) {
-			n = nverts(&elems[e]);
+			n = elemnodes(m, e, nv, iv + 5);
 			iv[0] = ++id;
-			iv[1] = n == 4 ? 3 : 2;
+			iv[1] = mshtype[m->order - 1][n / m->order - 2];
 			iv[2] = 2;
 			iv[3] = iv[4] = classtag(m->leaves[i].class);
-			for (k = 0; k < n; k++)
-				iv[5 + k] = perm[elems[e].v[k] - 1];
-			putline(stdout, iv, 5 + n, NULL, 0, "");
+			putline(stdout, iv, 5 + (int)n, NULL, 0, "");
 		}
 	for (i = 0; i < m->nsegs; i++) {
 		iv[0] = ++id;
-		iv[1] = 1;
+		iv[1] = mshtype[m->order - 1][0];
 		iv[2] = 2;
 		iv[3] = iv[4] = m->bfit ? m->segs[i].ring : 3;
 		iv[5] = perm[m->segs[i].a - 1];
 		iv[6] = perm[m->segs[i].b - 1];
-		putline(stdout, iv, 7, NULL, 0, "");
+		iv[7] = (long long)nv + (m->order == 2 ?
+		    segmid(m, &m->segs[i]) : 0);
+		putline(stdout, iv, 6 + m->order, NULL, 0, "");
 	}
 	printf("$EndElements\n");
 }
@@ -257,41 +262,42 @@ void
 writevtk(const struct mesh *m, size_t nv, const uint32_t *inv)
 {
 	const uint32_t *perm = m->perm;
-	const struct elem *elems = m->elems;
-	long long iv[5];
+	long long iv[1 + 8];
 	double xy[3];
-	size_t i, j, e, nref = 0, nline;
-	int k, n, pass;
+	size_t i, j, e, nref = 0, nline, n;
+	int k, pass;
 
 	printf("# vtk DataFile Version 3.0\nqtmesh\nASCII\n"
-	    "DATASET UNSTRUCTURED_GRID\nPOINTS %zu double\n", nv);
-	for (i = 0; i < nv; i++) {
-		vertexxy(m, inv[i], xy);
+	    "DATASET UNSTRUCTURED_GRID\nPOINTS %zu double\n", nv + m->nmid);
+	for (i = 0; i < nv + m->nmid; i++) {
+		nodexy(m, nv, inv, i, xy);
 		xy[2] = 0;
 		putline(stdout, NULL, 0, xy, 3, "");
 	}
 	for (i = 0; i < m->nelems; i++)
-		nref += 1 + nverts(&elems[i]);
-	nline = m->bfit ? m->nsegs : 0;	/* -b: the boundary as lines, type 3 */
-	printf("CELLS %zu %zu\n", m->nelems + nline, nref + 3 * nline);
+		nref += 1 + m->order * nverts(&m->elems[i]);
+	nline = m->bfit ? m->nsegs : 0;	/* -b: the boundary as lines */
+	printf("CELLS %zu %zu\n", m->nelems + nline,
+	    nref + (2 + m->order) * nline);
 	for (i = 0; i < m->nelems; i++) {
-		n = nverts(&elems[i]);
-		iv[0] = n;
-		for (k = 0; k < n; k++)
-			iv[1 + k] = perm[elems[i].v[k] - 1] - 1;
-		putline(stdout, iv, 1 + n, NULL, 0, "");
+		iv[0] = (long long)(n = elemnodes(m, i, nv, iv + 1));
+		for (k = 1; k <= (int)n; k++)
+			iv[k]--;
+		putline(stdout, iv, 1 + (int)n, NULL, 0, "");
 	}
 	for (i = 0; i < nline; i++) {
-		iv[0] = 2;
+		iv[0] = 1 + m->order;
 		iv[1] = perm[m->segs[i].a - 1] - 1;
 		iv[2] = perm[m->segs[i].b - 1] - 1;
-		putline(stdout, iv, 3, NULL, 0, "");
+		if (m->order == 2)
+			iv[3] = (long long)nv + segmid(m, &m->segs[i]) - 1;
+		putline(stdout, iv, 2 + m->order, NULL, 0, "");
 	}
 	printf("CELL_TYPES %zu\n", m->nelems + nline);
 	for (i = 0; i < m->nelems; i++)
-		printf("%d\n", nverts(&elems[i]) == 4 ? 9 : 5);
+		printf("%d\n", vtktype[m->order - 1][nverts(&m->elems[i]) - 2]);
 	for (i = 0; i < nline; i++)
-		printf("3\n");
+		printf("%d\n", vtktype[m->order - 1][0]);
 	printf("CELL_DATA %zu\n", m->nelems + nline);
 	for (pass = 0; pass < (m->bfit ? 3 : 2); pass++) {
 		printf("SCALARS %s int 1\nLOOKUP_TABLE default\n",
