@@ -181,8 +181,8 @@ meshed='$1 == "vertex" { x[$2] = $3; y[$2] = $4 }
 	run -2 --separate-stderr qtmesh -b -c F /dev/null
 	[[ "$stderr" == *"not with -c"* ]]
 	run -2 --separate-stderr qtmesh -x
-	[ "${stderr_lines[1]}" = "usage: qtmesh [-bHhrTv] [-a angle] [-c classes] [-e family] [-f format] [-o basename] [-t fraction] [file]" ]
-	grep -q '^\.Op Fl bHhrTv$' "$TOP/man/qtmesh.1"
+	[ "${stderr_lines[1]}" = "usage: qtmesh [-2bHhrTv] [-a angle] [-c classes] [-e family] [-f format] [-o basename] [-t fraction] [file]" ]
+	grep -q '^\.Op Fl 2bHhrTv$' "$TOP/man/qtmesh.1"
 }
 
 @test "rings that cross inside a leaf are refused, naming it, and no mesh is written" {
@@ -800,4 +800,25 @@ print(ring.get(("line", 1), 0), ring.get(("line", 2), 0), ring.get(("line", 0), 
 	qtsplit -l 5 q.qt | qtbalance | qtmesh -b > m.qt
 	grep -q '^leaf ' m.qt
 	! awk '$1 == "leaf" && ($9 == "E" || $6 < 0)' m.qt | grep -q .
+}
+
+@test "msh: a boundary line's elementary tag is its ring edge's, R + E, and it lies on that edge" {
+	# the quarter plate, one ring: tags 2 to 6 for edges 1 (y = 0), 2 (x = 1),
+	# 3 (y = 1), 4 (x = 0) and 5 (the hole's arc, its chords' ends on it)
+	qtsplit -l 6 "$SAMPLES/quarter-plate.qt" | qtbalance | qtmesh -b -f msh > m.msh
+	run -0 awk '$0 == "$Nodes" { getline; mode = "n"; next }
+	    $0 == "$Elements" { getline; mode = "e"; next } /^\$End/ { mode = "" }
+	    mode == "n" { x[$1] = $2; y[$1] = $3 }
+	    mode == "e" && $2 == 1 { seen[$5]++
+	        for (k = 6; k <= 7; k++) { n = $k; bad = 0
+	            if ($4 != 1) bad = 1
+	            if ($5 == 2 && y[n] != 0) bad = 1
+	            if ($5 == 3 && x[n] != 1) bad = 1
+	            if ($5 == 4 && y[n] != 1) bad = 1
+	            if ($5 == 5 && x[n] != 0) bad = 1
+	            if ($5 == 6 && (x[n]^2 + y[n]^2 - 0.01)^2 > 1e-24) bad = 1
+	            if ($5 < 2 || $5 > 6) bad = 1
+	            if (bad) { print "line " $1 " off its edge " $5; exit 1 } } }
+	    END { for (t = 2; t <= 6; t++) printf("%s%d", (t > 2 ? " " : ""), (seen[t] > 0)); print "" }' m.msh
+	[ "$output" = "1 1 1 1 1" ]
 }

@@ -394,8 +394,8 @@ print(*sorted(cls), *sorted(lev))'
 	run -2 --separate-stderr qtmesh -o m /dev/null
 	run -2 --separate-stderr qtmesh -c X /dev/null
 	run -2 --separate-stderr qtmesh -x
-	[ "${stderr_lines[1]}" = "usage: qtmesh [-bHhrTv] [-a angle] [-c classes] [-e family] [-f format] [-o basename] [-t fraction] [file]" ]
-	grep -q '^\.Op Fl bHhrTv$' "$TOP/man/qtmesh.1"
+	[ "${stderr_lines[1]}" = "usage: qtmesh [-2bHhrTv] [-a angle] [-c classes] [-e family] [-f format] [-o basename] [-t fraction] [file]" ]
+	grep -q '^\.Op Fl 2bHhrTv$' "$TOP/man/qtmesh.1"
 	run -1 --separate-stderr bash -c 'polyread "$SAMPLES/invl.brep" | qtsplit | qtleaves -n | qtmesh'
 	[[ "$stderr" == *"already holds a mesh"* ]]
 }

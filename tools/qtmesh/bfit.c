@@ -728,6 +728,5 @@ bfitmesh(struct mesh *m)
 		bfitboundary(m);
 	free(b->ringsides.slot);
 	free(b->cedge);
-	free(b->redge);
-	return b->nbv;
+	return b->nbv;	/* redge stays: the msh writer names ring edges */
 }

@@ -167,6 +167,18 @@ writeqtree(const struct mesh *m, size_t nv, const uint32_t *inv)
 }
 
 /*
+ * -b: the elementary tag of boundary side sg, its ring edge's: R + E for
+ * the stream's R rings and the E-th edge of all of them.
+ */
+static size_t
+segtag(const struct mesh *m, const struct seg *sg)
+{
+	if (sg->ring == 0)
+		return 0;
+	return m->b.nrlen + m->b.redge[sg->ring - 1] + sg->edge;
+}
+
+/*
  * -b: the rings that boundary sides run along, each a physical group of
  * lines, "ring N" with tag N, written to fp unless NULL: their count.
  */
@@ -245,14 +257,16 @@ writemsh(const struct mesh *m, size_t nv, const uint32_t *inv)
 			putline(stdout, iv, 5 + (int)n, NULL, 0, "");
 		}
 	for (i = 0; i < m->nsegs; i++) {
+		const struct seg *sg = &m->segs[i];
+
 		iv[0] = ++id;
 		iv[1] = mshtype[m->order - 1][0];
 		iv[2] = 2;
-		iv[3] = iv[4] = m->bfit ? m->segs[i].ring : 3;
-		iv[5] = perm[m->segs[i].a - 1];
-		iv[6] = perm[m->segs[i].b - 1];
-		iv[7] = (long long)nv + (m->order == 2 ?
-		    segmid(m, &m->segs[i]) : 0);
+		iv[3] = m->bfit ? sg->ring : 3;
+		iv[4] = m->bfit ? (long long)segtag(m, sg) : 3;
+		iv[5] = perm[sg->a - 1];
+		iv[6] = perm[sg->b - 1];
+		iv[7] = (long long)nv + (m->order == 2 ? segmid(m, sg) : 0);
 		putline(stdout, iv, 6 + m->order, NULL, 0, "");
 	}
 	printf("$EndElements\n");
