@@ -44,7 +44,8 @@ POLYREADOBJ = tools/polyread/main.o tools/polyread/src.o \
 QTMESHOBJ = tools/qtmesh/main.o tools/qtmesh/tree.o tools/qtmesh/conform.o \
 	tools/qtmesh/bfit.o tools/qtmesh/boundary.o tools/qtmesh/join.o \
 	tools/qtmesh/rcm.o tools/qtmesh/write.o tools/qtmesh/refine.o \
-	tools/qtmesh/arcs.o tools/qtmesh/inp.o tools/qtmesh/order2.o
+	tools/qtmesh/arcs.o tools/qtmesh/inp.o tools/qtmesh/order2.o \
+	tools/qtmesh/angles.o
 $(BIN): lib/libqtree.a
 polyread: $(POLYREADOBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(POLYREADOBJ) lib/libqtree.a $(LDLIBS)

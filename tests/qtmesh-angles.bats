@@ -125,3 +125,76 @@ quality() {
 	awk -v a="$(cat e6)" -v b="$(cat e7)" -v c="$(cat e8)" \
 	    'BEGIN { exit !(a / b >= 3 && b / c >= 3) }'
 }
+
+# The cases where -a 20 once broke with exit status 0: each a ring file
+# name and a level.  Writes them to the scratch directory.
+badcases() {
+	# the full plate [-1,1]^2 with a hole of radius 0.1: the circle passes
+	# 5e-5 from a grid corner at level 7
+	cat > fullplate.qt <<-'EOF2'
+	qtree 1
+	universe -1 -1 2
+	ring 1 outer 4
+	v -1 -1
+	v 1 -1
+	v 1 1
+	v -1 1
+	ring 2 hole 4
+	v 0.1 0
+	a 0 -0.1
+	v -0.1 0
+	a 0 0.1
+	end 11
+	EOF2
+	printf 'qtree 1\nuniverse 0 0 16\nring 1 outer 4\nv 0 0\nv 10 0\nv 10 0.001\nv 0 0.001\nend 6\n' > strip.qt
+	printf 'qtree 1\nuniverse 0 0 16\nring 1 outer 4\nv 0 0\nv 10 0\nv 10 0.000001\nv 0 0.000001\nend 6\n' > sliver.qt
+	printf 'qtree 1\nuniverse 0 0 4\nring 1 outer 4\nv 0.5 0.5\nv 3.5 0.5\nv 3.5 3.5\nv 0.5 3.5\nring 2 hole 4\nv 1 1\nv 1 2\nv 1.9999999 2\nv 1.9999999 1\nring 3 hole 4\nv 2.0000001 1\nv 2.0000001 2\nv 3 2\nv 3 1\nend 16\n' > holes.qt
+	# a wedge of 0.01 degrees: tan(0.01 degrees) = 1.7453292608e-4
+	printf 'qtree 1\nuniverse 0 0 4\nring 1 outer 3\nv 0 0\nv 3 0\nv 3 0.0005235987782\nend 5\n' > wedge.qt
+	# a ring vertex 1 ulp from the grid point (1, 0) on the universe's side
+	printf 'qtree 1\nuniverse 0 0 4\nring 1 outer 4\nv 0.9999999999999999 0\nv 3 0\nv 3 3\nv 1 3\nend 6\n' > ulp.qt
+	echo "fullplate.qt 7 strip.qt 5 sliver.qt 5 holes.qt 5 wedge.qt 6 ulp.qt 3"
+}
+
+@test "-a 20 on the cases that once broke it: met, or refused with the element, its place and the reason" {
+	set -- $(badcases)
+	met=0 refused=0
+	while [ $# -gt 0 ]; do
+		qtsplit -l "$2" "$1" | qtbalance > t.qt
+		run --separate-stderr qtmesh -b t.qt
+		if [ "$status" -eq 0 ]; then
+			echo "$output" > m.qt
+			angles m.qt
+			met=$((met + 1))
+		else
+			echo "$1: $stderr"
+			[ "$status" -eq 1 ]
+			[ -z "$output" ]
+			[[ "$stderr" == "qtmesh: t.qt:"*": leaf "*": element "*" has an angle of "*" degrees at "*", under -a 20: "*"no mesh written" ]]
+			[[ "$stderr" == *"budget"* || "$stderr" == *"rounding"* ]]
+			refused=$((refused + 1))
+		fi
+		shift 2
+	done
+	echo "met $met, refused $refused"
+	# the plate, the strip and the wedge are met (the wedge's 0.01 degrees
+	# at its apex only), the 1e-6 sliver and the holes 2e-7 apart refused
+	[ "$met" -ge 3 ]
+}
+
+@test "the plate's grid corner beside the hole: the chord split on itself, the bound met" {
+	badcases > /dev/null
+	qtsplit -l 7 fullplate.qt | qtbalance | qtmesh -b > m.qt
+	angles m.qt
+	# the vertices on the hole: on the circle, or inside it by under the
+	# bulge of a chord of the finest side (h = 2 / 128: h^2 / 4 in r^2 - x^2 - y^2)
+	qtmesh -b -f msh < <(qtsplit -l 7 fullplate.qt | qtbalance) > m.msh
+	run -0 awk '$0 == "$Nodes" { getline; on = 1; next } /^\$End/ { on = 0 }
+	    on { d = 0.01 - $2 * $2 - $3 * $3
+	        if (d > -1e-15 && d < 1e-15) circle++
+	        else if (d > 0 && d < (2 / 128)^2 / 4) chord++ }
+	    END { print circle + 0, chord + 0 }' m.msh
+	set -- $output
+	[ "$1" -gt 40 ]
+	[ "$2" -gt 0 ]
+}

@@ -720,6 +720,8 @@ bfitmesh(struct mesh *m)
 		refine(m);
 	/* -t changes the elements: their boundary is walked again after */
 	checkboundary(m, m->format != QTREE && !joining);
+	if (m->minangle > 0)
+		checkangles(m);
 	if (joining)
 		jointiny(m);
 	earclip_free(b->ear);

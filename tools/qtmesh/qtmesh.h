@@ -186,6 +186,7 @@ struct bfit {
 	long		*keptline;
 	size_t		 nkept, keptcap, keptlinecap;
 	int		 hasarcs;
+	int		 spent;		/* -a: the refinement's budget ran out */
 };
 
 struct mesh {
@@ -268,6 +269,9 @@ uint32_t arcchord(const struct bfit *, struct point, struct point,
 
 /* refine.c: -b's triangles refined to the angle bound (-a) */
 void	 refine(struct mesh *);
+
+/* angles.c: the bound checked, or the element that breaks it named */
+void	 checkangles(struct mesh *);
 
 /* join.c: -t, small pieces joined to their neighbours */
 void	 jointiny(struct mesh *);

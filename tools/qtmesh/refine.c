@@ -17,7 +17,10 @@
  * side shared with a templated leaf cannot be split without breaking that
  * leaf's elements: the leaf joins the band instead, its elements cut into
  * triangles.  A budget of new vertices (20 for each triangle of the band
- * at the start) bounds the work where rounding stops the refinement.  Every predicate is exact (orient2d,
+ * at the start, and 2^18 more: a 10 by 0.001 strip takes 10^4) bounds the
+ * work where the input's features are finer than doubles let the
+ * refinement resolve, and checkangles() then refuses the mesh, naming
+ * the element and the reason.  Every predicate is exact (orient2d,
  * incircle); the points made, circumcentres and midpoints, are rounded
  * to doubles, and a point that would not keep every triangle positive is
  * not made.  Angles are measured in floating point, as a user measures
@@ -419,6 +422,16 @@ splitpoint(const struct refiner *r, uint32_t a, uint32_t b, double *x,
 	*y = pa->y / 2 + pb->y / 2;
 }
 
+/* Is x, y strictly inside the angle of the triangle p, a, b at p? */
+static int
+inwedge(struct refiner *r, uint32_t p, uint32_t a, uint32_t b, double x,
+    double y)
+{
+	return orient2d(pt(r, p)->x, pt(r, p)->y, pt(r, a)->x, pt(r, a)->y, x,
+	    y) > 0 && orient2d(pt(r, p)->x, pt(r, p)->y, x, y, pt(r, b)->x,
+	    pt(r, b)->y) > 0;
+}
+
 /*
  * The boundary side a -> b split, or, when it is a templated leaf's side,
  * that leaf pulled into the band: 1 when something changed.
@@ -450,9 +463,18 @@ splitside(struct refiner *r, uint32_t a, uint32_t b)
 		x = on.x, y = on.y;	/* a chord of an arc: on the arc */
 	else
 		splitpoint(r, a, b, &x, &y);
-	if (bvfind(&m->b, x, y) != 0 || orient2d(pt(r, p)->x, pt(r, p)->y,
-	    pt(r, a)->x, pt(r, a)->y, x, y) <= 0 || orient2d(pt(r, p)->x,
-	    pt(r, p)->y, x, y, pt(r, b)->x, pt(r, b)->y) <= 0)
+	/*
+	 * The arc's point past the triangle (its third vertex closer to the
+	 * arc than the arc's bulge over the chord, a grid corner beside a
+	 * chord's end): the chord is split on itself, so that the region
+	 * stays the chords' polygon, its new vertex off the circle by under
+	 * the bulge.
+	 */
+	if (arc != 0 && !inwedge(r, p, a, b, x, y)) {
+		arc = 0;
+		splitpoint(r, a, b, &x, &y);
+	}
+	if (bvfind(&m->b, x, y) != 0 || !inwedge(r, p, a, b, x, y))
 		goto frozen;
 	mid = newvertex(r, x, y);
 	if (arc != 0)
@@ -869,7 +891,7 @@ refine(struct mesh *m)
 				r.input[v - 1] = 1;
 		}
 	buildband(&r);
-	r.budget = 20 * r.nt + 4096;
+	r.budget = 20 * r.nt + ((size_t)1 << 18);
 	flipall(&r);
 	r.ntouched = 0;
 	for (i = 0; i < r.nt; i++) {
@@ -896,6 +918,10 @@ refine(struct mesh *m)
 		}
 	}
 	rewrite(&r);
+	for (i = 0; i < m->nleaves; i++)
+		if (r.inband[i])
+			b->templated[i] = 0;	/* its elements are refined */
+	b->spent = r.budget == 0;
 	free(r.t);
 	free(r.open.slot);
 	free(r.leaftab);
@@ -907,4 +933,3 @@ refine(struct mesh *m)
 	free(r.flip);
 	free(r.touched);
 }
-
