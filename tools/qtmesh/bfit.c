@@ -730,5 +730,5 @@ bfitmesh(struct mesh *m)
 		bfitboundary(m);
 	free(b->ringsides.slot);
 	free(b->cedge);
-	return b->nbv;	/* redge stays: the msh writer names ring edges */
+	return b->nbv;	/* redge stays: the msh writer tags ring edges */
 }
