@@ -1,7 +1,9 @@
 /*
- * angles.c: the bound of -a checked on the mesh that refine.c leaves, so
- * that qtmesh never writes a mesh that breaks it: an element under the
- * bound is named, with its place and the reason, and qtmesh exits 1.
+ * angles.c: the angles of -b's elements: one corner's (cornerangle, which
+ * join.c takes too), and the bound of -a checked on the mesh that
+ * refine.c leaves, so that qtmesh never writes a mesh that breaks it: an
+ * element under the bound is named, with its place and the reason, and
+ * qtmesh exits 1.
  */
 #include <math.h>
 #include <stdint.h>
@@ -11,15 +13,33 @@
 #include "qtree.h"
 #include "qtmesh.h"
 
-/* The angle of the triangle p, q, r at p, in degrees. */
-static double
-angleat(const struct point *p, const struct point *q, const struct point *r)
-{
-	double ux = q->x - p->x, uy = q->y - p->y;
-	double vx = r->x - p->x, vy = r->y - p->y;
+#define DEGREES	(180 / 3.14159265358979323846)
 
-	return atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy) *
-	    (180 / 3.14159265358979323846);
+/* The angle of the polygon w[0 .. n) of vertices bv at w[k], in radians. */
+double
+cornerangle(const struct point *bv, const uint32_t *w, int n, int k)
+{
+	const struct point *a = &bv[w[(k + n - 1) % n] - 1], *b = &bv[w[k] - 1],
+	    *d = &bv[w[(k + 1) % n] - 1];
+	double ux = a->x - b->x, uy = a->y - b->y;
+	double vx = d->x - b->x, vy = d->y - b->y;
+
+	return atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
+}
+
+/* Each vertex's angles summed over the elements, in degrees. */
+static double *
+anglesums(const struct mesh *m)
+{
+	double *sum = xcalloc(m->b.nbv + 1, sizeof(*sum));
+	size_t e;
+	int k, n;
+
+	for (e = 0; e < m->nelems; e++)
+		for (n = nverts(&m->elems[e]), k = 0; k < n; k++)
+			sum[m->elems[e].v[k]] += DEGREES *
+			    cornerangle(m->b.bv, m->elems[e].v, n, k);
+	return sum;
 }
 
 /*
@@ -67,32 +87,24 @@ checkangles(struct mesh *m)
 {
 	const struct bfit *b = &m->b;
 	const double tol = 1e-9;
-	double *sum = xcalloc(b->nbv + 1, sizeof(*sum));
+	double *sum = NULL, a;	/* the sums, made at the first angle under */
 	size_t i, e;
 	int k, n;
 
-	for (e = 0; e < m->nelems; e++)
-		for (n = nverts(&m->elems[e]), k = 0; k < n; k++) {
-			const uint32_t *v = m->elems[e].v;
-
-			sum[v[k]] += angleat(&b->bv[v[k] - 1],
-			    &b->bv[v[(k + 1) % n] - 1],
-			    &b->bv[v[(k + n - 1) % n] - 1]);
-		}
 	for (i = 0; i < m->nleaves; i++) {
 		if (b->templated[i])
 			continue;
 		for (e = b->elstart[i]; e < b->elstart[i + 1]; e++)
 			for (n = nverts(&m->elems[e]), k = 0; k < n; k++) {
-				const uint32_t *v = m->elems[e].v;
-				const struct point *p = &b->bv[v[k] - 1];
-				double a = angleat(p, &b->bv[v[(k + 1) % n] - 1],
-				    &b->bv[v[(k + n - 1) % n] - 1]);
-
-				if (a >= m->minangle - tol ||
-				    sum[v[k]] < 2 * m->minangle + tol)
+				a = DEGREES * cornerangle(b->bv, m->elems[e].v,
+				    n, k);
+				if (a >= m->minangle - tol)
 					continue;
-				badangle(m, i, e, k, a);
+				if (sum == NULL)
+					sum = anglesums(m);
+				if (!(sum[m->elems[e].v[k]] < 2 * m->minangle +
+				    tol))
+					badangle(m, i, e, k, a);
 			}
 	}
 	free(sum);

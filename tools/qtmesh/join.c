@@ -140,20 +140,11 @@ convex(const struct point *bv, const uint32_t *w, int n)
 static double
 smallestangle(const struct point *bv, const uint32_t *w, int n)
 {
-	double least = 4, ux, uy, vx, vy;	/* more than pi */
+	double least = 4;	/* more than pi */
 	int k;
 
-	for (k = 0; k < n; k++) {
-		const struct point *a = &bv[w[(k + n - 1) % n] - 1],
-		    *b = &bv[w[k] - 1], *d = &bv[w[(k + 1) % n] - 1];
-
-		ux = a->x - b->x;
-		uy = a->y - b->y;
-		vx = d->x - b->x;
-		vy = d->y - b->y;
-		least = fmin(least, atan2(fabs(ux * vy - uy * vx),
-		    ux * vx + uy * vy));
-	}
+	for (k = 0; k < n; k++)
+		least = fmin(least, cornerangle(bv, w, n, k));
 	return least;
 }
 

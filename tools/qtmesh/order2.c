@@ -79,44 +79,42 @@ jacobian(const double (*xy)[2], int n, const double *dn)
 	return j[0] * j[3] - j[1] * j[2];
 }
 
+/* The Jacobian of the n-node element at xy, at (r, s) of its reference. */
+static double
+jacobianat(const double (*xy)[2], int n, double r, double s)
+{
+	double dn[16];
+
+	if (n == 6)
+		shape6(r, s, dn);
+	else
+		shape8(r, s, dn);
+	return jacobian(xy, n, dn);
+}
+
 /*
- * Where the Jacobian is checked, as reference coordinates: the nodes,
- * CalculiX's rules (the triangle's 3 points at 1/6 and 2/3, the quad's 3
- * by 3 at 0 and sqrt(3/5)) and a grid of 5 a side between.
+ * Is the Jacobian positive at CalculiX's integration points (the
+ * triangle's 3 at 1/6 and 2/3, the quad's 3 by 3 at 0 and sqrt(3/5)), and
+ * on a grid of 5 a side, which holds the nodes?
  */
 static int
 positive(const double (*xy)[2], int n)
 {
-	static const double tri[][2] = {
-		{ 0, 0 }, { 1, 0 }, { 0, 1 }, { .5, 0 }, { .5, .5 }, { 0, .5 },
+	static const double tri[3][2] = {
 		{ 1. / 6, 1. / 6 }, { 2. / 3, 1. / 6 }, { 1. / 6, 2. / 3 },
 	};
-	double dn[16], g = sqrt(.6), r, s;
-	size_t i, j;
+	double g = sqrt(.6);
+	int i, j;
 
-	for (i = 0; n == 6 && i < sizeof(tri) / sizeof(tri[0]); i++) {
-		shape6(tri[i][0], tri[i][1], dn);
-		if (!(jacobian(xy, n, dn) > 0))
+	for (i = 0; i < (n == 6 ? 3 : 9); i++)
+		if (!(n == 6 ? jacobianat(xy, n, tri[i][0], tri[i][1]) > 0 :
+		    jacobianat(xy, n, (i % 3 - 1) * g, (i / 3 - 1) * g) > 0))
 			return 0;
-	}
 	for (i = 0; i <= 4; i++)
-		for (j = 0; j <= 4 - (n == 6 ? i : 0); j++) {
-			if (n == 6) {
-				shape6(i / 4., j / 4., dn);
-			} else {
-				r = (i - 2) / 2., s = (j - 2) / 2.;
-				shape8(r, s, dn);
-			}
-			if (!(jacobian(xy, n, dn) > 0))
+		for (j = 0; j <= (n == 6 ? 4 - i : 4); j++)
+			if (!(n == 6 ? jacobianat(xy, n, i / 4., j / 4.) > 0 :
+			    jacobianat(xy, n, (i - 2) / 2., (j - 2) / 2.) > 0))
 				return 0;
-		}
-	for (i = 0; n == 8 && i < 9; i++) {
-		r = (double)((int)(i % 3) - 1) * g;
-		s = (double)((int)(i / 3) - 1) * g;
-		shape8(r, s, dn);
-		if (!(jacobian(xy, n, dn) > 0))
-			return 0;
-	}
 	return 1;
 }
 

@@ -270,7 +270,8 @@ uint32_t arcchord(const struct bfit *, struct point, struct point,
 /* refine.c: -b's triangles refined to the angle bound (-a) */
 void	 refine(struct mesh *);
 
-/* angles.c: the bound checked, or the element that breaks it named */
+/* angles.c: a corner's angle; the bound checked, or the element named */
+double	 cornerangle(const struct point *, const uint32_t *, int, int);
 void	 checkangles(struct mesh *);
 
 /* join.c: -t, small pieces joined to their neighbours */
